@@ -1,0 +1,27 @@
+#pragma once
+// A rigid circle (the book's RigidBody/Circle.js). A circle looks the same at every
+// angle, so it carries a reference point on its rim, drawn as a spoke to the centre,
+// that makes its rotation visible.
+
+#include "rigid_shape.h"
+
+namespace engine {
+
+class Circle : public RigidShape {
+public:
+    Circle(Vec2 center, double radius);
+
+    double radius() const { return radius_; }
+    // The rim point the spoke is drawn to: straight above the centre before any rotation.
+    Vec2 startpoint() const { return startpoint_; }
+
+    void move(Vec2 offset) override;
+    void rotate(double angle) override;
+    void draw(browser::Canvas& context) const override;
+
+private:
+    double radius_;
+    Vec2 startpoint_;
+};
+
+}  // namespace engine

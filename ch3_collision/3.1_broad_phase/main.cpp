@@ -1,0 +1,49 @@
+// The stage's index.html: the canvas and the echo panel, the engine core with its
+// scene, and the user control script that every key press goes to.
+
+#include "browser.h"
+#include "core.h"
+#include "my_game.h"
+#include "user_control.h"
+
+namespace {
+
+// Frame 0: a rectangle and a circle on top of each other at the left; in the middle a
+// turned rectangle with a circle just above it, apart but within each other's bounding
+// circles (Figure 3-5); a lone circle at the right. Frame 40: the middle circle moves
+// 20 px up, out of reach. Frame 80: the lone circle joins the pair at the left.
+const browser::StageDefaults kStage{
+    .id = "s3_1",
+    .title = "3.1 Broad Phase Method: bounding circles, overlapping pairs in green",
+    .keys = "a*20 f g d*20 f 7 e*4 0 w*4 g d*25 g 8@40 w*2 9 a*42@80 s*4 0",
+    .frames = 120,
+    .every = 40,
+};
+
+class Page final : public browser::PageScripts {
+public:
+    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
+    void onAnimationFrame() override { core_.runGameLoop(); }
+
+private:
+    engine::Core& core_;
+    engine::UserControl& control_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
+    if (!command_line.options) return command_line.exit_status;
+    const browser::Options& options = *command_line.options;
+
+    browser::Window window(options.frame_ms);
+    browser::Random random(options.seed);
+
+    engine::Core core(window);
+    engine::buildScene(core);
+    engine::UserControl control(core, random);
+    Page page(core, control);
+    return browser::run(page, window, options);
+}

@@ -1,0 +1,49 @@
+// The stage's index.html: the canvas and the echo panel, the engine core with its
+// scene, and the user control script that every key press goes to.
+
+#include "browser.h"
+#include "core.h"
+#include "my_game.h"
+#include "user_control.h"
+
+namespace {
+
+// Frame 0: two circles with the same centre at the left; two overlapping side by side
+// in the middle; a rectangle and a circle on the cursor at the right. Frame 40: the
+// middle right circle moves 20 px down. Frame 80: it turns and moves 10 px left,
+// deeper in.
+const browser::StageDefaults kStage{
+    .id = "s3_2",
+    .title = "3.2 Circle Collision Detection: collision info between circles",
+    .keys = "a*25 g g d*20 g d*3 g d*18 f g 8@40 s*2 e*4@80 a 0",
+    .frames = 120,
+    .every = 40,
+};
+
+class Page final : public browser::PageScripts {
+public:
+    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
+    void onAnimationFrame() override { core_.runGameLoop(); }
+
+private:
+    engine::Core& core_;
+    engine::UserControl& control_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
+    if (!command_line.options) return command_line.exit_status;
+    const browser::Options& options = *command_line.options;
+
+    browser::Window window(options.frame_ms);
+    browser::Random random(options.seed);
+
+    engine::Core core(window);
+    engine::buildScene(core);
+    engine::UserControl control(core, random);
+    Page page(core, control);
+    return browser::run(page, window, options);
+}

@@ -1,0 +1,50 @@
+// The stage's index.html: the canvas and the echo panel, the engine core with its
+// scene, and the user control script that every key press goes to.
+
+#include "browser.h"
+#include "core.h"
+#include "my_game.h"
+#include "user_control.h"
+
+namespace {
+
+// Frame 0: at the left a rectangle and a turned one over its right side; in the middle
+// a rectangle and a square turned into a diamond, whose corner pokes into its side; at the
+// right a rectangle inside a circle, and a second circle over the first. The cursor
+// then goes up out of the way. Frame 40: the turned rectangle at the left turns more.
+// Frame 80: the diamond moves 10 px into the rectangle beside it.
+const browser::StageDefaults kStage{
+    .id = "s3_3",
+    .title = "3.3 Rectangle Collision: the support-point SAT between rectangles",
+    .keys = "a*25 f d*3 f 6 e*3 0 d*15 f d*4 f 8 e*8 a 0 d*17 f g d*3 g w*12 6@40 e*3 8@80 a 0",
+    .frames = 120,
+    .every = 40,
+};
+
+class Page final : public browser::PageScripts {
+public:
+    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
+    void onAnimationFrame() override { core_.runGameLoop(); }
+
+private:
+    engine::Core& core_;
+    engine::UserControl& control_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
+    if (!command_line.options) return command_line.exit_status;
+    const browser::Options& options = *command_line.options;
+
+    browser::Window window(options.frame_ms);
+    browser::Random random(options.seed);
+
+    engine::Core core(window);
+    engine::buildScene(core);
+    engine::UserControl control(core, random);
+    Page page(core, control);
+    return browser::run(page, window, options);
+}

@@ -1,0 +1,49 @@
+// The stage's index.html: the canvas and the echo panel, the engine core with its
+// scene, and the user control script that every key press goes to.
+
+#include "browser.h"
+#include "core.h"
+#include "my_game.h"
+#include "user_control.h"
+
+namespace {
+
+// Frame 0: three rectangles, each with a circle: at the left over its bottom-right
+// corner, in the middle over its right side, at the right centred on it. The cursor
+// then goes up out of the way. Frame 40: the left rectangle turns. Frame 80: the middle
+// circle moves 20 px up and 10 px left, past the end of the side, to the corner.
+const browser::StageDefaults kStage{
+    .id = "s3_4",
+    .title = "3.4 Rectangle Circle Collision: corner, side and inside",
+    .keys = "a*25 f d*3 s*3 g w*3 d*22 f d*3 g d*23 f g w*12 5@40 e*3 8@80 w*2 a 0",
+    .frames = 120,
+    .every = 40,
+};
+
+class Page final : public browser::PageScripts {
+public:
+    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
+    void onAnimationFrame() override { core_.runGameLoop(); }
+
+private:
+    engine::Core& core_;
+    engine::UserControl& control_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
+    if (!command_line.options) return command_line.exit_status;
+    const browser::Options& options = *command_line.options;
+
+    browser::Window window(options.frame_ms);
+    browser::Random random(options.seed);
+
+    engine::Core core(window);
+    engine::buildScene(core);
+    engine::UserControl control(core, random);
+    Page page(core, control);
+    return browser::run(page, window, options);
+}

@@ -1,0 +1,10 @@
+# Runs a stage's default program into ACTUAL, then checks every picture in EXPECTED
+# against the one of the same name in ACTUAL. Used by the <stage>.pictures tests.
+execute_process(COMMAND ${PROGRAM} --out ${ACTUAL} RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "${PROGRAM} exited with status ${status}")
+endif()
+execute_process(COMMAND ${COMPARE} ${EXPECTED} ${ACTUAL} --diff-dir ${ACTUAL}/diff RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "pictures differ from ${EXPECTED}; see ${ACTUAL}/diff")
+endif()

@@ -1,0 +1,192 @@
+#include "command_line.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+#include "random.h"
+
+namespace browser {
+namespace {
+
+constexpr double kMaxFrameMs = 10'000.0;  // ten seconds a frame is already a slide show
+
+// A bad option: the text after "program: " on the one line we print.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+std::string in_quotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
+
+// The whole of `text` as a T, or nothing. from_chars takes no sign for unsigned types,
+// no '+', no spaces and (here) no trailing characters, so "12abc", " 5" and "-1" for a
+// seed all fail.
+template <class T>
+std::optional<T> parse_whole(std::string_view text) {
+    T value{};
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc{} || stop != end) return std::nullopt;
+    return value;
+}
+
+int int_option(const char* name, const std::string& text, int low, int high) {
+    const auto value = parse_whole<long long>(text);
+    if (!value || *value < low || *value > high) {
+        throw UsageError(std::string(name) + ": must be a whole number from " + std::to_string(low) +
+                         " to " + std::to_string(high) + " (got " + in_quotes(text) + ")");
+    }
+    return static_cast<int>(*value);
+}
+
+std::uint64_t seed_option(const std::string& text) {
+    const auto value = parse_whole<std::uint64_t>(text);
+    if (!value) {
+        throw UsageError("--seed: must be a whole number from 0 to " +
+                         std::to_string(std::numeric_limits<std::uint64_t>::max()) + " (got " +
+                         in_quotes(text) + ")");
+    }
+    return *value;
+}
+
+double frame_ms_option(const std::string& text) {
+    const auto value = parse_whole<double>(text);
+    // from_chars reads "nan" and "inf" as numbers, hence the isfinite test.
+    if (!value || !std::isfinite(*value) || *value <= 0.0 || *value > kMaxFrameMs) {
+        std::ostringstream message;
+        message << "--frame-ms: must be a number of milliseconds above 0 and at most " << kMaxFrameMs
+                << " (got " << in_quotes(text) << ")";
+        throw UsageError(message.str());
+    }
+    return *value;
+}
+
+// CLI11's messages are made for its own multi-line report; we print one line.
+std::string one_line(std::string text) {
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+}
+
+std::string program_name(int argc, const char* const* argv, const StageDefaults& defaults) {
+    if (argc < 1 || argv == nullptr || argv[0] == nullptr) return defaults.id;
+    const std::string name = std::filesystem::path(argv[0]).filename().string();
+    return name.empty() ? defaults.id : name;
+}
+
+}  // namespace
+
+ParsedCommandLine parse_command_line(int argc, const char* const* argv, const StageDefaults& defaults) {
+    const std::string program = program_name(argc, argv, defaults);
+
+    // Every value is read as text and checked below, so each bad value gets a message
+    // in our words, naming the option and quoting what the reader typed.
+    std::string out_text = (std::filesystem::path("out") / defaults.id).string();
+    std::string frames_text = std::to_string(defaults.frames);
+    std::string every_text = std::to_string(defaults.every);
+    std::string seed_text = std::to_string(Random::kDefaultSeed);
+    std::string keys_text = defaults.keys;
+    std::ostringstream default_frame_ms;
+    default_frame_ms << 1000.0 / 60.0;
+    std::string frame_ms_text;  // read only when given, so the default stays exactly 1000/60
+
+    CLI::App app(defaults.title, program);
+    app.footer("A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
+               "keys: a-z, 0-9, comma, up, down. A token without @ comes at the frame of the one before.");
+    // Unknown words stay in app.remaining() so we can name them ourselves.
+    app.allow_extras();
+    app.add_option("--out", out_text, "folder for the pictures (replaced by each run)")
+        ->type_name("DIR")->capture_default_str();
+    app.add_option("--frames", frames_text, "how many animation frames to run")
+        ->type_name("N")->capture_default_str();
+    app.add_option("--every", every_text, "also save every K-th frame as frame_NNNN.png (0: only final.png)")
+        ->type_name("K")->capture_default_str();
+    app.add_option("--seed", seed_text, "seed of the random numbers")
+        ->type_name("S")->capture_default_str();
+    app.add_option("--keys", keys_text, "key presses, e.g. \"f*3 g@10 up e*5@20\"")
+        ->type_name("SCRIPT")->capture_default_str();
+    app.add_option("--frame-ms", frame_ms_text, "simulated milliseconds per frame")
+        ->type_name("MS")->default_str(default_frame_ms.str());
+
+    // Bound before parsing; std::map keeps references to its values valid as it grows.
+    std::map<std::string, std::string> extra;
+    for (const ExtraOption& option : defaults.extra_options) {
+        auto [slot, added] = extra.emplace(option.name, option.default_value);
+        try {
+            if (!added) throw CLI::OptionAlreadyAdded(option.name);
+            app.add_option(option.name, slot->second, option.help)
+                ->type_name(option.value_name)->capture_default_str();
+        } catch (const CLI::ConstructionError& error) {
+            // A mistake in the stage's code, not in what the reader typed.
+            throw std::logic_error("extra option " + in_quotes(option.name) + ": " + one_line(error.what()));
+        }
+    }
+
+    try {
+        // CLI11 takes the arguments last-first and without the program name.
+        std::vector<std::string> arguments;
+        for (int i = argc - 1; i >= 1; --i) arguments.emplace_back(argv[i]);
+        try {
+            app.parse(arguments);
+        } catch (const CLI::CallForHelp&) {
+            std::cout << app.help();
+            return {std::nullopt, 0};
+        } catch (const CLI::ParseError& error) {
+            throw UsageError(one_line(error.what()));
+        }
+        // CLI11 hands an option the next word even when that word is another option, so
+        // "--out --frames 5" would quietly make a folder named "--frames".
+        for (const CLI::Option* option : app.get_options()) {
+            for (const std::string& value : option->results()) {
+                if (value.starts_with("--")) {
+                    throw UsageError(option->get_name() + ": needs a value before " + in_quotes(value));
+                }
+            }
+        }
+        for (const std::string& word : app.remaining()) {
+            if (word == "--") continue;  // the usual "end of options" mark: harmless
+            throw UsageError((word.starts_with("-") ? "unknown option " : "unexpected argument ") +
+                             in_quotes(word) + " (see --help)");
+        }
+
+        Options options;
+        options.out_dir = out_text;
+        if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
+        options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
+        options.every = int_option("--every", every_text, 0, KeyScript::kMaxFrame);
+        options.seed = seed_option(seed_text);
+        if (app.count("--frame-ms") > 0) {
+            options.frame_ms = frame_ms_option(frame_ms_text);
+        }
+        try {
+            options.keys = KeyScript::parse(keys_text);
+        } catch (const KeyScriptError& error) {
+            throw UsageError(std::string("--keys: ") + error.what());
+        }
+        options.keys_text = keys_text;
+        // A press after the last frame would silently do nothing, which hides a mistake.
+        if (options.keys.lastFrame() >= options.frames) {
+            const bool own_script = app.count("--keys") > 0;
+            throw UsageError(std::string(own_script ? "--keys: a key is pressed"
+                                                    : "--frames: the default key script presses a key") +
+                             " before frame " + std::to_string(options.keys.lastFrame()) + ", but --frames " +
+                             std::to_string(options.frames) + " runs only frames 0 to " +
+                             std::to_string(options.frames - 1) + (own_script ? "" : " (give --keys as well)"));
+        }
+        options.extra = extra;
+        return {std::move(options), 0};
+    } catch (const UsageError& error) {
+        std::cerr << program << ": " << error.what() << '\n';
+        return {std::nullopt, 2};
+    }
+}
+
+}  // namespace browser

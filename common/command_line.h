@@ -1,0 +1,62 @@
+#pragma once
+// One command-line shape for every stage (CLI11):
+//   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS  --help
+// plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
+// list them in StageDefaults::extra_options and read their values from Options::extra.
+// CLI11 stays inside command_line.cpp, so stages never see it.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "keys.h"
+
+namespace browser {
+
+// A text option one stage adds to the common ones. The parser only collects the text;
+// the stage checks it (a scene file that does not load, ...) and reports problems itself.
+struct ExtraOption {
+    std::string name;           // "--scene": two dashes, not one of the common options
+    std::string value_name;     // "FILE": shown by --help
+    std::string help;           // one line for --help
+    std::string default_value;  // the value when the option is not given ("" for none)
+};
+
+// What a stage's program does when run with no options.
+struct StageDefaults {
+    std::string id;           // "s1_1": names the default output folder out/<id>/
+    std::string title;        // "1.1 HTML5 Canvas": shown by --help
+    std::string keys;         // the default key script
+    int frames = 1;           // how many animation frames to run
+    int every = 0;            // also write every K-th frame (0: only the last)
+    std::vector<ExtraOption> extra_options;  // the stage's own options, if any
+};
+
+struct Options {
+    std::filesystem::path out_dir;
+    int frames = 1;
+    int every = 0;
+    std::uint64_t seed = 0;
+    KeyScript keys;
+    std::string keys_text;
+    double frame_ms = 1000.0 / 60.0;
+    // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
+    std::map<std::string, std::string> extra;
+};
+
+// The outcome of reading argv: options to run with, or an exit status when the
+// program should stop now (0 after --help, 2 after a bad option, whose one-line
+// message has already been printed to stderr, prefixed by the program's file name).
+// A key scripted for a frame the run never reaches is a bad option too, since it would
+// silently do nothing.
+struct ParsedCommandLine {
+    std::optional<Options> options;
+    int exit_status = 0;
+};
+
+ParsedCommandLine parse_command_line(int argc, const char* const* argv, const StageDefaults& defaults);
+
+}  // namespace browser

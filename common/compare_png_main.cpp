@@ -1,0 +1,169 @@
+// compare_png EXPECTED ACTUAL [--diff FILE] [--diff-dir DIR] [--channel N] [--share X]
+//
+// Checks pictures against reference pictures by their decoded pixels. EXPECTED and
+// ACTUAL are two PNG files, or two folders: then every *.png in EXPECTED must have a
+// matching file of the same name in ACTUAL (extra files in ACTUAL are ignored).
+// Exit status: 0 all match, 1 some picture differs or is missing, 2 bad usage or a file
+// that cannot be read or written.
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "image_compare.h"
+#include "png_io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMatch = 0, kDifferent = 1, kTrouble = 2;
+constexpr const char* kProgram = "compare_png";
+
+struct Settings {
+    fs::path expected, actual;
+    fs::path diff_file;  // --diff: for two files, always written
+    fs::path diff_dir;   // --diff-dir: DIR/<name>, written only for pictures that differ
+    browser::Tolerance tolerance{.channel = 2, .pixel_share = 0.001};
+};
+
+std::string size_text(const browser::Image& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+// Compares one pair, prints its line and writes the diff picture where asked.
+int compare_pair(const std::string& name, const fs::path& expected_path, const fs::path& actual_path,
+                 const Settings& settings) {
+    browser::Image expected, actual;
+    try {
+        expected = browser::read_png(expected_path);
+        actual = browser::read_png(actual_path);
+    } catch (const browser::FileError& error) {
+        std::cerr << kProgram << ": " << error.what() << "\n";
+        return kTrouble;
+    }
+
+    const browser::ImageDifference difference = browser::compare_images(expected, actual, settings.tolerance);
+    const bool match = difference.within(settings.tolerance);
+    std::ostringstream line;
+    line << name << ": ";
+    if (!difference.same_size) line << "size " << size_text(actual) << ", expected " << size_text(expected) << "; ";
+    line << "differing pixels " << difference.differing_pixels << " (" << std::fixed << std::setprecision(4)
+         << 100.0 * difference.differing_share << "%), largest channel difference "
+         << difference.largest_channel_difference << ": " << (match ? "OK" : "DIFFERENT");
+    std::cout << line.str() << "\n";
+
+    std::optional<fs::path> diff_path;
+    if (!settings.diff_file.empty()) diff_path = settings.diff_file;
+    if (!settings.diff_dir.empty()) {
+        const fs::path in_dir = settings.diff_dir / name;
+        std::error_code ignored;
+        if (match) fs::remove(in_dir, ignored);  // an old diff picture would mislead
+        else diff_path = in_dir;
+    }
+    if (diff_path) {
+        try {
+            browser::write_png(*diff_path, difference.diff);
+        } catch (const browser::FileError& error) {
+            std::cerr << kProgram << ": " << error.what() << "\n";
+            return kTrouble;
+        }
+        std::cout << "  diff: " << diff_path->string() << "\n";
+    }
+    return match ? kMatch : kDifferent;
+}
+
+int compare_folders(const Settings& settings) {
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(settings.expected, error)) {
+        if (entry.path().extension() == ".png") names.push_back(entry.path().filename().string());
+    }
+    if (error) {
+        std::cerr << kProgram << ": cannot list " << settings.expected.string() << ": " << error.message() << "\n";
+        return kTrouble;
+    }
+    if (names.empty()) {  // most likely a wrong folder, which must not pass as "all match"
+        std::cerr << kProgram << ": no *.png files in " << settings.expected.string() << "\n";
+        return kTrouble;
+    }
+    std::sort(names.begin(), names.end());
+
+    int status = kMatch;
+    for (const std::string& name : names) {
+        const fs::path actual = settings.actual / name;
+        int outcome = kDifferent;
+        if (fs::exists(actual, error)) outcome = compare_pair(name, settings.expected / name, actual, settings);
+        else std::cout << name << ": MISSING from " << settings.actual.string() << "\n";
+        status = std::max(status, outcome);
+    }
+    return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Settings settings;
+    CLI::App app{"Compares PNG pictures by their pixels: two files, or every *.png of the folder "
+                 "EXPECTED with the file of the same name in the folder ACTUAL.",
+                 kProgram};
+    app.add_option("EXPECTED", settings.expected, "reference PNG file or folder")->required()->type_name("PATH");
+    app.add_option("ACTUAL", settings.actual, "PNG file or folder to check")->required()->type_name("PATH");
+    auto* diff = app.add_option("--diff", settings.diff_file, "write the diff picture of two files here")
+                     ->type_name("FILE");
+    app.add_option("--diff-dir", settings.diff_dir, "write DIR/<name> for each picture that differs")
+        ->type_name("DIR")
+        ->excludes(diff);
+    app.add_option("--channel", settings.tolerance.channel,
+                   "a pixel differs when a channel differs by more than N (0-255)")
+        ->type_name("N")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 255));
+    app.add_option("--share", settings.tolerance.pixel_share,
+                   "pictures match while at most this share of pixels differs (0-1)")
+        ->type_name("X")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        if (error.get_exit_code() == 0) return app.exit(error);  // --help
+        std::cerr << kProgram << ": " << error.what() << " (see " << kProgram << " --help)\n";
+        return kTrouble;
+    }
+
+    std::error_code error;
+    const bool folders = fs::is_directory(settings.expected, error);
+    for (const fs::path& path : {settings.expected, settings.actual}) {
+        if (!fs::exists(path, error)) {
+            std::cerr << kProgram << ": " << path.string() << " does not exist\n";
+            return kTrouble;
+        }
+    }
+    if (fs::is_directory(settings.actual, error) != folders) {
+        std::cerr << kProgram << ": EXPECTED and ACTUAL must be two files or two folders\n";
+        return kTrouble;
+    }
+    if (folders && !settings.diff_file.empty()) {
+        std::cerr << kProgram << ": --diff names one file; use --diff-dir to compare folders\n";
+        return kTrouble;
+    }
+    if (!settings.diff_dir.empty()) {
+        fs::create_directories(settings.diff_dir, error);
+        if (error) {
+            std::cerr << kProgram << ": cannot create " << settings.diff_dir.string() << ": " << error.message() << "\n";
+            return kTrouble;
+        }
+    }
+
+    if (folders) return compare_folders(settings);
+    return compare_pair(settings.expected.filename().string(), settings.expected, settings.actual, settings);
+}

@@ -1,0 +1,121 @@
+#include "keys.h"
+
+#include <charconv>
+
+namespace browser {
+namespace {
+
+constexpr int kLetterCount = 26;
+constexpr int kDigitCount = 10;
+constexpr const char* kValidKeys = "keys: a-z, 0-9, comma, up, down";
+
+// The whole of `text` as a number in [low, high], or nothing: no sign, no spaces, no
+// trailing characters, so "3x", "+3" and "" are all rejected.
+std::optional<int> whole_number(std::string_view text, int low, int high) {
+    int value = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc{} || stop != end || value < low || value > high) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+[[noreturn]] void reject(std::string_view token, const std::string& reason) {
+    throw KeyScriptError("bad key script token \"" + std::string(token) + "\": " + reason +
+                         " (" + kValidKeys + ")");
+}
+
+bool is_space(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+
+}  // namespace
+
+std::string key_name(Key key) {
+    const int index = static_cast<int>(key);
+    if (key >= Key::A && key <= Key::Z) return std::string(1, static_cast<char>('a' + index));
+    if (const auto digit = digit_value(key)) return std::string(1, static_cast<char>('0' + *digit));
+    switch (key) {
+        case Key::Comma: return "comma";
+        case Key::Up: return "up";
+        case Key::Down: return "down";
+        default: return "?";  // unreachable: every letter and digit returned above
+    }
+}
+
+std::optional<Key> parse_key(std::string_view name) {
+    std::string lower(name);
+    for (char& c : lower) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    }
+    if (lower.size() == 1) {
+        const char c = lower[0];
+        if (c >= 'a' && c <= 'z') return static_cast<Key>(static_cast<int>(Key::A) + (c - 'a'));
+        if (c >= '0' && c <= '9') return static_cast<Key>(static_cast<int>(Key::Digit0) + (c - '0'));
+        if (c == ',') return Key::Comma;
+        return std::nullopt;
+    }
+    if (lower == "comma") return Key::Comma;
+    if (lower == "up") return Key::Up;
+    if (lower == "down") return Key::Down;
+    return std::nullopt;
+}
+
+std::optional<int> digit_value(Key key) {
+    const int offset = static_cast<int>(key) - static_cast<int>(Key::Digit0);
+    if (offset < 0 || offset >= kDigitCount) return std::nullopt;
+    return offset;
+}
+
+KeyScript KeyScript::parse(std::string_view script) {
+    static_assert(static_cast<int>(Key::Digit0) == kLetterCount, "letters come first in Key");
+
+    KeyScript result;
+    int frame = 0;  // carried from one token to the next, as the grammar says
+    std::size_t pos = 0;
+    while (pos < script.size()) {
+        if (is_space(script[pos])) {
+            ++pos;
+            continue;
+        }
+        std::size_t end = pos;
+        while (end < script.size() && !is_space(script[end])) ++end;
+        const std::string_view token = script.substr(pos, end - pos);
+        pos = end;
+
+        // KEY[*COUNT][@FRAME]: everything after the first '@' is the frame, so a stray
+        // '*' or second '@' there is reported as a bad frame.
+        std::string_view rest = token;
+        if (const auto at = rest.find('@'); at != std::string_view::npos) {
+            const auto parsed = whole_number(rest.substr(at + 1), 0, kMaxFrame);
+            if (!parsed) reject(token, "frame must be a whole number from 0 to " + std::to_string(kMaxFrame));
+            frame = *parsed;
+            rest = rest.substr(0, at);
+        }
+        int count = 1;
+        if (const auto star = rest.find('*'); star != std::string_view::npos) {
+            const auto parsed = whole_number(rest.substr(star + 1), 1, kMaxCount);
+            if (!parsed) reject(token, "count must be a whole number from 1 to " + std::to_string(kMaxCount));
+            count = *parsed;
+            rest = rest.substr(0, star);
+        }
+        if (rest.empty()) reject(token, "a key name must come first");
+        const auto key = parse_key(rest);
+        if (!key) reject(token, "unknown key \"" + std::string(rest) + "\"");
+
+        result.presses_[frame].insert(result.presses_[frame].end(), count, *key);
+    }
+    return result;
+}
+
+std::vector<Key> KeyScript::pressesAt(int frame) const {
+    const auto found = presses_.find(frame);
+    return found == presses_.end() ? std::vector<Key>{} : found->second;
+}
+
+int KeyScript::lastFrame() const {
+    return presses_.empty() ? -1 : presses_.rbegin()->first;
+}
+
+}  // namespace browser

@@ -1,0 +1,57 @@
+#pragma once
+// The keyboard. The book's UserControl reacts to key codes from onkeydown; our
+// programs replay a script of key presses instead, so every run is repeatable.
+//
+// Script grammar: tokens separated by spaces, each  KEY[*COUNT][@FRAME]
+//   KEY    a letter, a digit, `comma` (or `,`), `up` or `down`; case-insensitive
+//   COUNT  press it COUNT times (>= 1)
+//   FRAME  press it before frame FRAME (0-based); a token without @ happens at the
+//          frame of the token before it (frame 0 at the start)
+// Example: "f*3 g@10 up e*5@20"
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace browser {
+
+enum class Key {
+    A, B, C, D, E, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, V, W, X, Y, Z,
+    Digit0, Digit1, Digit2, Digit3, Digit4, Digit5, Digit6, Digit7, Digit8, Digit9,
+    Comma, Up, Down,
+};
+
+// The key's name as a script writes it ("f", "7", "comma", "up").
+std::string key_name(Key key);
+std::optional<Key> parse_key(std::string_view name);
+// 0..9 for Digit0..Digit9, nothing for any other key.
+std::optional<int> digit_value(Key key);
+
+struct KeyScriptError : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+class KeyScript {
+public:
+    // Limits that keep a typo ("f*1000000000") from making a run allocate or loop for ages.
+    static constexpr int kMaxCount = 10'000;
+    static constexpr int kMaxFrame = 10'000'000;
+
+    KeyScript() = default;
+    // Throws KeyScriptError with one line naming the token and listing the valid keys.
+    static KeyScript parse(std::string_view script);
+
+    // Keys pressed before frame `frame`, in script order.
+    std::vector<Key> pressesAt(int frame) const;
+    // The last frame any key is pressed at (-1 for an empty script).
+    int lastFrame() const;
+    bool empty() const { return presses_.empty(); }
+
+private:
+    std::map<int, std::vector<Key>> presses_;
+};
+
+}  // namespace browser

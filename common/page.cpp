@@ -1,0 +1,123 @@
+#include "page.h"
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <stb_easy_font.h>
+
+namespace browser {
+
+namespace {
+
+constexpr Color kFrameColor = colors::kGray;  // the thin border round the canvas
+constexpr Color kTextColor = colors::kBlack;
+
+// stb_easy_font draws on a grid of font units: letters about 7 units tall. Two pixels a
+// unit makes text about the size of a browser's default font, and a whole number of
+// pixels a unit keeps every stroke of every letter on whole pixels. Lines 9 units apart
+// (the font's own spacing is 12) let the longest echo of chapter 4, some 24 lines, fit.
+constexpr int kTextScale = 2;
+constexpr int kLineHeight = 9 * kTextScale;
+constexpr float kLetterSpacing = -1.0f;  // font units: tighter than the default, still clear;
+                                         // a panel line then holds about 38 letters
+constexpr int kPanelMargin = 10;
+
+// The font knows printable ASCII only; anything else would index past its tables.
+std::string printable(std::string_view line) {
+    std::string text;
+    for (char c : line) {
+        if (c == '\t') text += "    ";
+        else if (c >= ' ' && c <= '~') text += c;
+        else if (c != '\r') text += '?';
+    }
+    return text;
+}
+
+int text_width(std::string text) {  // a copy: the font's functions take a mutable char*
+    return stb_easy_font_width(text.data()) * kTextScale;
+}
+
+// Splits one line of text into pieces at most max_width pixels wide, breaking after the
+// last space that fits, or inside a word too long to fit at all. Continued pieces are
+// indented two spaces deeper than the line, so they read as part of the same entry.
+std::vector<std::string> wrap(std::string line, int max_width) {
+    const std::size_t first_letter = line.find_first_not_of(' ');
+    const std::string indent(first_letter == std::string::npos ? 0 : first_letter + 2, ' ');
+    std::vector<std::string> pieces;
+    while (text_width(line) > max_width) {
+        const std::size_t text_start = line.find_first_not_of(' ');
+        if (text_start == std::string::npos) break;
+        std::size_t fits = text_start + 1;  // always take a letter, so the loop moves on
+        while (fits < line.size() && text_width(line.substr(0, fits + 1)) <= max_width) ++fits;
+        const std::size_t space = line.rfind(' ', fits);
+        const std::size_t cut = (space != std::string::npos && space > text_start) ? space : fits;
+        pieces.push_back(line.substr(0, cut));
+        line = indent + line.substr(line[cut] == ' ' ? cut + 1 : cut);
+    }
+    pieces.push_back(line);
+    return pieces;
+}
+
+// Draws one line with its top-left corner at (x, y). The font hands back quads (four
+// corners each, x y z floats then 4 colour bytes); with kTextScale whole, every quad
+// covers whole pixels, so each is a plain rectangle fill. Quads past the page are cut.
+void draw_text(Image& page, std::string text, int x, int y) {
+    constexpr std::size_t kVertexBytes = 16, kQuadBytes = 4 * kVertexBytes;
+    constexpr std::size_t kMostQuadsPerLetter = 16;
+    std::vector<char> quads((text.size() + 1) * kMostQuadsPerLetter * kQuadBytes);
+    stb_easy_font_spacing(kLetterSpacing);
+    const int count = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(),
+                                          static_cast<int>(quads.size()));
+    for (int q = 0; q < count; ++q) {
+        float top_left[2], bottom_right[2];  // corners 0 and 2 of the quad
+        const char* quad = quads.data() + static_cast<std::size_t>(q) * kQuadBytes;
+        std::memcpy(top_left, quad, sizeof top_left);
+        std::memcpy(bottom_right, quad + 2 * kVertexBytes, sizeof bottom_right);
+        const int x0 = x + static_cast<int>(top_left[0] * kTextScale);
+        const int y0 = y + static_cast<int>(top_left[1] * kTextScale);
+        const int x1 = x + static_cast<int>(bottom_right[0] * kTextScale);
+        const int y1 = y + static_cast<int>(bottom_right[1] * kTextScale);
+        for (int j = y0; j < y1; ++j) {
+            for (int i = x0; i < x1; ++i) page.set(i, j, kTextColor);
+        }
+    }
+}
+
+}  // namespace
+
+Image render_page(const Document& document) {
+    const Image& canvas = document.canvas.pixels();
+    Image page(canvas.width + kPanelWidth, canvas.height, colors::kWhite);
+    page.paste(canvas, 0, 0);
+
+    // The frame lies on the canvas's outermost pixels, so the page keeps the canvas size.
+    for (int i = 0; i < canvas.width; ++i) {
+        page.set(i, 0, kFrameColor);
+        page.set(i, canvas.height - 1, kFrameColor);
+    }
+    for (int j = 0; j < canvas.height; ++j) {
+        page.set(0, j, kFrameColor);
+        page.set(canvas.width - 1, j, kFrameColor);
+    }
+
+    // The echo panel: one text line per '\n', wrapped to the panel, cut at its bottom.
+    const int text_left = canvas.width + kPanelMargin;
+    const int text_width_limit = kPanelWidth - 2 * kPanelMargin;
+    int y = kPanelMargin;
+    std::string_view echo = document.ui_echo;
+    while (!echo.empty() && y < page.height) {
+        const std::size_t end = echo.find('\n');
+        const std::string line = printable(echo.substr(0, end));
+        echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
+        for (const std::string& piece : wrap(line, text_width_limit)) {
+            draw_text(page, piece, text_left, y);
+            y += kLineHeight;
+        }
+    }
+    return page;
+}
+
+}  // namespace browser

@@ -1,0 +1,23 @@
+#pragma once
+// The book's index.html as the browser shows it: the canvas on the left and, on its
+// right, the "UI echo" text panel (selected object, its state, the key controls).
+
+#include <string>
+
+#include "canvas.h"
+#include "image.h"
+
+namespace browser {
+
+struct Document {
+    Canvas canvas;        // <canvas id="canvas">
+    std::string ui_echo;  // <div id="uiEchoString">: plain text, '\n' starts a new line
+};
+
+inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
+
+// Composes the page: canvas with a thin frame, the echo panel beside it.
+// Size: (canvas width + kPanelWidth) x canvas height.
+Image render_page(const Document& document);
+
+}  // namespace browser

@@ -1,0 +1,111 @@
+#include "png_io.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+namespace browser {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Every PNG file starts with these 8 bytes.
+constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+
+[[noreturn]] void fail(const char* doing, const fs::path& path, const std::string& reason) {
+    throw FileError(std::string(doing) + " " + path.string() + ": " + reason);
+}
+
+// The folder a file goes into: "." for a bare file name.
+fs::path folder_of(const fs::path& path) {
+    return path.has_parent_path() ? path.parent_path() : fs::path(".");
+}
+
+// stb_image_write hands the encoded bytes over in pieces; we collect them in memory so
+// that file errors are ours to report.
+void append_bytes(void* context, void* data, int size) {
+    auto& bytes = *static_cast<std::vector<unsigned char>*>(context);
+    const auto* first = static_cast<const unsigned char*>(data);
+    bytes.insert(bytes.end(), first, first + size);
+}
+
+}  // namespace
+
+void write_png(const fs::path& path, const Image& image) {
+    constexpr const char* kDoing = "cannot write PNG";
+    if (image.width <= 0 || image.height <= 0) fail(kDoing, path, "the picture is empty");
+
+    std::error_code error;
+    const fs::path folder = folder_of(path);
+    if (!fs::is_directory(folder, error)) {
+        const bool exists = fs::exists(folder, error);
+        fail(kDoing, path, (exists ? "not a folder: " : "folder does not exist: ") + folder.string());
+    }
+
+    std::vector<unsigned char> bytes;
+    if (!stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 4, image.rgba.data(),
+                                image.width * 4)) {
+        fail(kDoing, path, "the PNG encoder failed");
+    }
+
+    // Written beside the final name and renamed into place: a rename within one folder
+    // replaces the old file at once, so nobody ever reads half a picture.
+    const fs::path temporary = fs::path(path).concat(".tmp");
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) fail(kDoing, path, std::strerror(errno));
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written || !closed) {
+        const int reason = written ? errno : write_errno;
+        fs::remove(temporary, error);
+        fail(kDoing, path, std::strerror(reason));
+    }
+    fs::rename(temporary, path, error);
+    if (error) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        fail(kDoing, path, error.message());
+    }
+}
+
+Image read_png(const fs::path& path) {
+    constexpr const char* kDoing = "cannot read PNG";
+    std::error_code error;
+    if (!fs::exists(path, error)) fail(kDoing, path, "no such file");
+    if (fs::is_directory(path, error)) fail(kDoing, path, "it is a folder");
+
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(kDoing, path, std::strerror(errno));
+    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (bytes.size() < kPngSignature.size() ||
+        !std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin())) {
+        fail(kDoing, path, "not a PNG file");
+    }
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) fail(kDoing, path, "file too large");
+
+    int width = 0, height = 0, channels_in_file = 0;
+    unsigned char* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                                                  &channels_in_file, 4);
+    if (!pixels) fail(kDoing, path, std::string("damaged PNG file (") + stbi_failure_reason() + ")");
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgba.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    stbi_image_free(pixels);
+    return image;
+}
+
+}  // namespace browser

@@ -1,0 +1,243 @@
+// The browser session: the order of callbacks, the clock, and the folder of pictures.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "browser.h"
+#include "png_io.h"
+#include "scratch_folder.h"
+
+namespace fs = std::filesystem;
+using browser::Key;
+
+namespace {
+
+using test::ScratchFolder;
+
+
+// The names in `folder`, sorted.
+std::vector<std::string> names_in(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// Writes down every callback with the clock's time, and changes the page each frame so
+// pictures of different frames differ.
+class RecordingScripts : public browser::PageScripts {
+public:
+    RecordingScripts(browser::Document& document, const browser::Clock& clock) : document_(document), clock_(clock) {}
+
+    void onKeyDown(Key key) override { log.push_back("key " + browser::key_name(key) + " at " + now()); }
+    void onAnimationFrame() override {
+        log.push_back("frame at " + now());
+        document_.ui_echo = "frame " + std::to_string(++frames_);
+        document_.canvas.clear();
+        document_.canvas.strokeRect(2, 2, frames_, frames_);
+    }
+
+    std::vector<std::string> log;
+
+private:
+    std::string now() const {
+        std::ostringstream text;
+        text << clock_.nowMs();
+        return text.str();
+    }
+
+    browser::Document& document_;
+    const browser::Clock& clock_;
+    int frames_ = 0;
+};
+
+class ThrowingScripts : public browser::PageScripts {
+public:
+    void onKeyDown(Key) override {}
+    void onAnimationFrame() override { throw std::runtime_error("the page's script failed"); }
+};
+
+browser::Options options_for(const fs::path& out, int frames, int every, const std::string& keys = "") {
+    browser::Options options;
+    options.out_dir = out;
+    options.frames = frames;
+    options.every = every;
+    options.keys_text = keys;
+    options.keys = browser::KeyScript::parse(keys);
+    options.frame_ms = 10.0;
+    return options;
+}
+
+struct Result {
+    int status = 0;
+    std::string out, err;
+    std::vector<std::string> log;
+    browser::Image last_page;
+};
+
+// Runs the recording page with a small canvas, capturing what the browser prints.
+Result run(const browser::Options& options) {
+    browser::Window window(options.frame_ms, browser::Document{browser::Canvas(40, 30), ""});
+    RecordingScripts scripts(window.document, window.clock);
+    std::ostringstream out, err;
+    std::streambuf* old_out = std::cout.rdbuf(out.rdbuf());
+    std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
+    Result result;
+    try {
+        result.status = browser::run(scripts, window, options);
+    } catch (...) {
+        std::cout.rdbuf(old_out);
+        std::cerr.rdbuf(old_err);
+        throw;
+    }
+    std::cout.rdbuf(old_out);
+    std::cerr.rdbuf(old_err);
+    result.out = out.str();
+    result.err = err.str();
+    result.log = scripts.log;
+    result.last_page = browser::render_page(window.document);
+    return result;
+}
+
+bool is_one_line(const std::string& text) {
+    return !text.empty() && text.find('\n') == text.size() - 1;
+}
+
+}  // namespace
+
+TEST_CASE("browser: keys for frame k come before frame k, with the clock at (k+1) frames") {
+    ScratchFolder temp("browser_test");
+    const Result result = run(options_for(temp.path / "out", 3, 0, "f*2 G@2"));
+    REQUIRE(result.status == 0);
+    const std::vector<std::string> expected{
+        "key f at 10", "key f at 10", "frame at 10", "frame at 20", "key g at 30", "frame at 30",
+    };
+    CHECK(result.log == expected);
+}
+
+TEST_CASE("browser: final.png and every K-th frame are written") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+
+    SECTION("every 10 of 25 frames") {
+        const Result result = run(options_for(out, 25, 10));
+        REQUIRE(result.status == 0);
+        CHECK(names_in(out) ==
+              std::vector<std::string>{"final.png", "frame_0000.png", "frame_0010.png", "frame_0020.png"});
+        CHECK(is_one_line(result.out));
+        CHECK_THAT(result.out, Catch::StartsWith("wrote 4 pictures to "));
+        CHECK_THAT(result.out, Catch::Contains("frame_0000.png ... frame_0020.png"));
+        CHECK(result.err.empty());
+    }
+    SECTION("every 0: the final picture only") {
+        const Result result = run(options_for(out, 5, 0));
+        REQUIRE(result.status == 0);
+        CHECK(names_in(out) == std::vector<std::string>{"final.png"});
+        CHECK_THAT(result.out, Catch::StartsWith("wrote 1 picture to "));
+    }
+    SECTION("every frame") {
+        const Result result = run(options_for(out, 3, 1));
+        REQUIRE(result.status == 0);
+        CHECK(names_in(out) ==
+              std::vector<std::string>{"final.png", "frame_0000.png", "frame_0001.png", "frame_0002.png"});
+    }
+    SECTION("frame numbers past 9999 grow beyond four digits") {
+        const Result result = run(options_for(out, 10001, 10000));
+        REQUIRE(result.status == 0);
+        CHECK(names_in(out) == std::vector<std::string>{"final.png", "frame_0000.png", "frame_10000.png"});
+    }
+}
+
+TEST_CASE("browser: final.png shows the page after the last frame") {
+    ScratchFolder temp("browser_test");
+    const Result result = run(options_for(temp.path / "out", 4, 2));
+    REQUIRE(result.status == 0);
+    const browser::Image final_picture = browser::read_png(temp.path / "out" / "final.png");
+    CHECK(final_picture.width == result.last_page.width);
+    CHECK(final_picture.height == result.last_page.height);
+    CHECK(final_picture.rgba == result.last_page.rgba);
+    const browser::Image frame0 = browser::read_png(temp.path / "out" / "frame_0000.png");
+    CHECK(frame0.rgba != final_picture.rgba);
+}
+
+TEST_CASE("browser: a run replaces the whole output folder and leaves nothing beside it") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    REQUIRE(run(options_for(out, 3, 1)).status == 0);
+    std::ofstream(out / "old_notes.txt") << "from an earlier run\n";
+
+    const Result result = run(options_for(out, 2, 0));
+    REQUIRE(result.status == 0);
+    CHECK(names_in(out) == std::vector<std::string>{"final.png"});
+    CHECK(names_in(temp.path) == std::vector<std::string>{"out"});
+}
+
+TEST_CASE("browser: an empty output folder may be replaced, and a trailing slash is fine") {
+    ScratchFolder temp("browser_test");
+    fs::create_directories(temp.path / "out");
+    const Result result = run(options_for(temp.path / "out" / "", 1, 0));
+    REQUIRE(result.status == 0);
+    CHECK(names_in(temp.path / "out") == std::vector<std::string>{"final.png"});
+    CHECK(names_in(temp.path) == std::vector<std::string>{"out"});
+}
+
+TEST_CASE("browser: missing parent folders are created") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "a" / "b" / "out";
+    REQUIRE(run(options_for(out, 1, 0)).status == 0);
+    CHECK(fs::exists(out / "final.png"));
+}
+
+TEST_CASE("browser: an unwritable output folder gives status 1 and leaves nothing behind") {
+    ScratchFolder temp("browser_test");
+    std::ofstream(temp.path / "plain_file") << "not a folder\n";
+    const Result result = run(options_for(temp.path / "plain_file" / "out", 3, 1));
+    CHECK(result.status == 1);
+    CHECK(is_one_line(result.err));
+    CHECK_THAT(result.err, Catch::StartsWith("cannot write pictures to \""));
+    CHECK(result.out.empty());
+    CHECK(names_in(temp.path) == std::vector<std::string>{"plain_file"});
+}
+
+TEST_CASE("browser: a folder that no run wrote is left alone") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "important";
+    fs::create_directories(out);
+    std::ofstream(out / "thesis.txt") << "years of work\n";
+
+    const Result result = run(options_for(out, 1, 0));
+    CHECK(result.status == 1);
+    CHECK(is_one_line(result.err));
+    CHECK_THAT(result.err, Catch::Contains("important"));
+    CHECK(names_in(out) == std::vector<std::string>{"thesis.txt"});
+    CHECK(names_in(temp.path) == std::vector<std::string>{"important"});
+
+    SECTION("and so is a file in the folder's place") {
+        const fs::path file = temp.path / "file.png";
+        std::ofstream(file) << "x";
+        CHECK(run(options_for(file, 1, 0)).status == 1);
+        CHECK(fs::is_regular_file(file));
+    }
+    SECTION("and so are the current and parent folders") {
+        CHECK(run(options_for(".", 1, 0)).status == 1);
+        CHECK(run(options_for("..", 1, 0)).status == 1);
+    }
+}
+
+TEST_CASE("browser: a failing page script leaves no staging folder") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    browser::Window window(10.0, browser::Document{browser::Canvas(10, 10), ""});
+    ThrowingScripts scripts;
+    CHECK_THROWS_AS(browser::run(scripts, window, options_for(out, 2, 1)), std::runtime_error);
+    CHECK(fs::is_empty(temp.path));
+}

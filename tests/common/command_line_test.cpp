@@ -1,0 +1,217 @@
+// The command line every stage's program shares.
+#include <catch2/catch.hpp>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command_line.h"
+#include "random.h"
+
+using browser::Key;
+using browser::ParsedCommandLine;
+
+namespace {
+
+const browser::StageDefaults kDefaults{
+    .id = "s9_9",
+    .title = "9.9 A Test Stage",
+    .keys = "f@2 g",
+    .frames = 30,
+    .every = 10,
+    .extra_options = {{.name = "--scene", .value_name = "FILE", .help = "scene to load", .default_value = "default.txt"},
+                      {.name = "--dump", .value_name = "FILE", .help = "state dump", .default_value = ""}},
+};
+
+// Sends std::cout and std::cerr into strings while it lives.
+class CapturedOutput {
+public:
+    CapturedOutput() : old_out_(std::cout.rdbuf(out_.rdbuf())), old_err_(std::cerr.rdbuf(err_.rdbuf())) {}
+    ~CapturedOutput() {
+        std::cout.rdbuf(old_out_);
+        std::cerr.rdbuf(old_err_);
+    }
+    CapturedOutput(const CapturedOutput&) = delete;
+    CapturedOutput& operator=(const CapturedOutput&) = delete;
+
+    std::string out() const { return out_.str(); }
+    std::string err() const { return err_.str(); }
+
+private:
+    std::ostringstream out_, err_;
+    std::streambuf* old_out_;
+    std::streambuf* old_err_;
+};
+
+struct Outcome {
+    ParsedCommandLine parsed;
+    std::string out, err;
+};
+
+// Runs the parser as the program "/usr/bin/s9_9_test" would with these arguments.
+Outcome parse(std::vector<std::string> arguments) {
+    arguments.insert(arguments.begin(), "/usr/bin/s9_9_test");
+    std::vector<const char*> argv;
+    for (const std::string& argument : arguments) argv.push_back(argument.c_str());
+    argv.push_back(nullptr);  // as the real argv ends
+    Outcome outcome;
+    CapturedOutput captured;
+    outcome.parsed = browser::parse_command_line(static_cast<int>(arguments.size()), argv.data(), kDefaults);
+    outcome.out = captured.out();
+    outcome.err = captured.err();
+    return outcome;
+}
+
+// A bad command line stops with status 2 and exactly one line on stderr that starts
+// with the program's name and mentions `must_mention` (usually the option).
+void check_rejected(const std::vector<std::string>& arguments, const std::string& must_mention) {
+    const Outcome outcome = parse(arguments);
+    std::string shown;
+    for (const std::string& argument : arguments) shown += " [" + argument + "]";
+    INFO("arguments:" << shown << "\nstderr: " << outcome.err);
+    CHECK(outcome.parsed.exit_status == 2);
+    CHECK_FALSE(outcome.parsed.options.has_value());
+    REQUIRE_FALSE(outcome.err.empty());
+    CHECK(outcome.err.back() == '\n');
+    CHECK(outcome.err.find('\n') == outcome.err.size() - 1);
+    CHECK(outcome.err.rfind("s9_9_test: ", 0) == 0);
+    CHECK_THAT(outcome.err, Catch::Contains(must_mention));
+    CHECK(outcome.out.empty());
+}
+
+}  // namespace
+
+TEST_CASE("command_line: no arguments give the stage's defaults") {
+    const Outcome outcome = parse({});
+    REQUIRE(outcome.parsed.exit_status == 0);
+    REQUIRE(outcome.parsed.options.has_value());
+    const browser::Options& options = *outcome.parsed.options;
+    CHECK(options.out_dir == std::filesystem::path("out") / "s9_9");
+    CHECK(options.frames == 30);
+    CHECK(options.every == 10);
+    CHECK(options.seed == browser::Random::kDefaultSeed);
+    CHECK(options.keys_text == "f@2 g");
+    CHECK(options.keys.pressesAt(2) == std::vector<Key>{Key::F, Key::G});
+    CHECK(options.frame_ms == 1000.0 / 60.0);
+    CHECK(options.extra.at("--scene") == "default.txt");
+    CHECK(options.extra.at("--dump").empty());
+    CHECK(options.extra.size() == 2);
+    CHECK(outcome.out.empty());
+    CHECK(outcome.err.empty());
+}
+
+TEST_CASE("command_line: each option is read") {
+    const Outcome outcome = parse({"--out", "pictures/run 1", "--frames", "120", "--every=7", "--seed",
+                                   "18446744073709551615", "--keys", "UP*2@100 comma", "--frame-ms", "2.5",
+                                   "--dump", "state.txt", "--scene=box.txt", "--"});
+    REQUIRE(outcome.parsed.exit_status == 0);
+    REQUIRE(outcome.parsed.options.has_value());
+    const browser::Options& options = *outcome.parsed.options;
+    CHECK(options.out_dir == "pictures/run 1");
+    CHECK(options.frames == 120);
+    CHECK(options.every == 7);
+    CHECK(options.seed == 18446744073709551615ULL);
+    CHECK(options.keys_text == "UP*2@100 comma");
+    CHECK(options.keys.pressesAt(100) == std::vector<Key>{Key::Up, Key::Up, Key::Comma});
+    CHECK(options.keys.pressesAt(2).empty());
+    CHECK(options.frame_ms == 2.5);
+    CHECK(options.extra.at("--scene") == "box.txt");
+    CHECK(options.extra.at("--dump") == "state.txt");
+    CHECK(outcome.err.empty());
+}
+
+TEST_CASE("command_line: edge values that are allowed") {
+    const Outcome outcome = parse({"--frames", "1", "--every", "0", "--seed", "0", "--keys", "", "--frame-ms", "10000"});
+    REQUIRE(outcome.parsed.options.has_value());
+    CHECK(outcome.parsed.options->frames == 1);
+    CHECK(outcome.parsed.options->every == 0);
+    CHECK(outcome.parsed.options->seed == 0);
+    CHECK(outcome.parsed.options->keys.empty());
+    CHECK(outcome.parsed.options->frame_ms == 10000.0);
+}
+
+TEST_CASE("command_line: --help prints the usage and stops with status 0") {
+    for (const char* help : {"--help", "-h"}) {
+        const Outcome outcome = parse({help});
+        CHECK(outcome.parsed.exit_status == 0);
+        CHECK_FALSE(outcome.parsed.options.has_value());
+        CHECK(outcome.err.empty());
+        CHECK_THAT(outcome.out, Catch::Contains("9.9 A Test Stage"));
+        for (const char* option : {"--out", "--frames", "--every", "--seed", "--keys", "--frame-ms", "--scene", "--dump"}) {
+            CHECK_THAT(outcome.out, Catch::Contains(option));
+        }
+    }
+}
+
+TEST_CASE("command_line: bad numbers are rejected in one line naming the option") {
+    check_rejected({"--frames", "abc"}, "--frames: must be a whole number from 1 to 10000000 (got \"abc\")");
+    check_rejected({"--frames", "0"}, "--frames");
+    check_rejected({"--frames", "-3"}, "--frames");
+    check_rejected({"--frames=-3"}, "--frames");
+    check_rejected({"--frames", "2.5"}, "--frames");
+    check_rejected({"--frames", "10000001"}, "--frames");
+    check_rejected({"--frames", "99999999999999999999"}, "--frames");
+    check_rejected({"--frames", ""}, "--frames");
+    check_rejected({"--frames", " 5"}, "--frames");
+    check_rejected({"--every", "-1"}, "--every");
+    check_rejected({"--every", "x"}, "--every");
+    check_rejected({"--seed", "-1"}, "--seed");
+    check_rejected({"--seed", "18446744073709551616"}, "--seed");
+    check_rejected({"--seed", "12abc"}, "--seed");
+    check_rejected({"--frame-ms", "nan"}, "--frame-ms");
+    check_rejected({"--frame-ms", "inf"}, "--frame-ms");
+    check_rejected({"--frame-ms", "-inf"}, "--frame-ms");
+    check_rejected({"--frame-ms", "0"}, "--frame-ms");
+    check_rejected({"--frame-ms", "-16"}, "--frame-ms");
+    check_rejected({"--frame-ms", "10000.5"}, "--frame-ms");
+    check_rejected({"--frame-ms", "16ms"}, "--frame-ms");
+    check_rejected({"--frame-ms", ""}, "--frame-ms");
+}
+
+TEST_CASE("command_line: bad key scripts are usage errors") {
+    check_rejected({"--keys", "q*x"}, "--keys: bad key script token \"q*x\"");
+    check_rejected({"--keys", "f@-1"}, "a-z, 0-9, comma, up, down");
+    check_rejected({"--keys", "left"}, "\"left\"");
+}
+
+TEST_CASE("command_line: keys after the last frame are a usage error") {
+    check_rejected({"--keys", "f@30"}, "--keys");                 // the default run has frames 0..29
+    check_rejected({"--frames", "2"}, "--frames");                // the default script presses at frame 2
+    const Outcome fine = parse({"--frames", "3"});
+    CHECK(fine.parsed.exit_status == 0);
+}
+
+TEST_CASE("command_line: unknown options, stray words and missing values") {
+    check_rejected({"--bogus"}, "\"--bogus\"");
+    check_rejected({"--bogus=3"}, "--bogus");
+    check_rejected({"-x"}, "\"-x\"");
+    check_rejected({"picture.png"}, "\"picture.png\"");
+    check_rejected({"--frames", "5", "extra"}, "\"extra\"");
+    check_rejected({"--", "extra"}, "\"extra\"");
+    check_rejected({"--frames"}, "--frames");
+    check_rejected({"--frames", "--every", "3"}, "--frames: needs a value");
+    check_rejected({"--out", "--frames", "5"}, "--out: needs a value");
+    check_rejected({"--keys", "--frames", "5"}, "--keys: needs a value");
+    check_rejected({"--scene", "--every", "5"}, "--scene: needs a value");
+    check_rejected({"--out"}, "--out");
+    check_rejected({"--out", ""}, "--out");
+    check_rejected({"--frames", "5", "--frames", "6"}, "--frames");
+}
+
+TEST_CASE("command_line: the program name is argv[0]'s file name, or the stage id without one") {
+    const char* const argv[] = {nullptr};
+    CapturedOutput captured;
+    const ParsedCommandLine parsed = browser::parse_command_line(0, argv, kDefaults);
+    CHECK(parsed.exit_status == 0);
+    const char* const bad[] = {"", "--bogus", nullptr};
+    CHECK(browser::parse_command_line(2, bad, kDefaults).exit_status == 2);
+    CHECK(captured.err().rfind("s9_9: ", 0) == 0);
+}
+
+TEST_CASE("command_line: a stage's own option that clashes is a programming error") {
+    browser::StageDefaults clash = kDefaults;
+    clash.extra_options.push_back({.name = "--frames", .value_name = "N", .help = "again", .default_value = ""});
+    const char* const argv[] = {"prog", nullptr};
+    CHECK_THROWS_AS(browser::parse_command_line(1, argv, clash), std::logic_error);
+}

@@ -1,0 +1,140 @@
+// The key script: the repeatable stand-in for a reader's keyboard.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "keys.h"
+
+using browser::Key;
+using browser::KeyScript;
+using browser::KeyScriptError;
+
+namespace {
+
+using Keys = std::vector<Key>;
+
+// The message of the error `script` throws, or "" when it parses.
+std::string error_of(const std::string& script) {
+    try {
+        KeyScript::parse(script);
+    } catch (const KeyScriptError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("key_script: every key has a name that parses back to it") {
+    for (int i = 0; i <= static_cast<int>(Key::Down); ++i) {
+        const Key key = static_cast<Key>(i);
+        INFO(key_name(key));
+        CHECK(browser::parse_key(browser::key_name(key)) == key);
+    }
+    CHECK(browser::key_name(Key::F) == "f");
+    CHECK(browser::key_name(Key::Digit7) == "7");
+    CHECK(browser::key_name(Key::Comma) == "comma");
+    CHECK(browser::key_name(Key::Up) == "up");
+    CHECK(browser::key_name(Key::Down) == "down");
+}
+
+TEST_CASE("key_script: key names are case-insensitive and comma has two spellings") {
+    CHECK(browser::parse_key("G") == Key::G);
+    CHECK(browser::parse_key("UP") == Key::Up);
+    CHECK(browser::parse_key("Down") == Key::Down);
+    CHECK(browser::parse_key("CoMmA") == Key::Comma);
+    CHECK(browser::parse_key(",") == Key::Comma);
+    CHECK_FALSE(browser::parse_key("").has_value());
+    CHECK_FALSE(browser::parse_key("left").has_value());
+    CHECK_FALSE(browser::parse_key("ff").has_value());
+    CHECK_FALSE(browser::parse_key(".").has_value());
+}
+
+TEST_CASE("key_script: digit_value gives the digit of digit keys only") {
+    CHECK(browser::digit_value(Key::Digit0) == 0);
+    CHECK(browser::digit_value(Key::Digit9) == 9);
+    CHECK_FALSE(browser::digit_value(Key::Z).has_value());
+    CHECK_FALSE(browser::digit_value(Key::Comma).has_value());
+}
+
+TEST_CASE("key_script: an empty script presses nothing") {
+    for (const char* script : {"", "   ", " \t\n "}) {
+        const KeyScript keys = KeyScript::parse(script);
+        CHECK(keys.empty());
+        CHECK(keys.lastFrame() == -1);
+        CHECK(keys.pressesAt(0).empty());
+    }
+}
+
+TEST_CASE("key_script: tokens without @ come at frame 0 in script order") {
+    const KeyScript keys = KeyScript::parse("f g up");
+    CHECK(keys.pressesAt(0) == Keys{Key::F, Key::G, Key::Up});
+    CHECK(keys.pressesAt(1).empty());
+    CHECK(keys.lastFrame() == 0);
+}
+
+TEST_CASE("key_script: counts repeat a key") {
+    const KeyScript keys = KeyScript::parse("f*3 g");
+    CHECK(keys.pressesAt(0) == Keys{Key::F, Key::F, Key::F, Key::G});
+}
+
+TEST_CASE("key_script: @ sets the frame and later tokens carry it over") {
+    const KeyScript keys = KeyScript::parse("f*3 g@10 up e*2@20 down");
+    CHECK(keys.pressesAt(0) == Keys{Key::F, Key::F, Key::F});
+    CHECK(keys.pressesAt(10) == Keys{Key::G, Key::Up});
+    CHECK(keys.pressesAt(20) == Keys{Key::E, Key::E, Key::Down});
+    CHECK(keys.pressesAt(5).empty());
+    CHECK(keys.pressesAt(21).empty());
+    CHECK(keys.lastFrame() == 20);
+}
+
+TEST_CASE("key_script: a frame named twice collects presses in script order") {
+    const KeyScript keys = KeyScript::parse("a@4 b@2 c@4");
+    CHECK(keys.pressesAt(4) == Keys{Key::A, Key::C});
+    CHECK(keys.pressesAt(2) == Keys{Key::B});
+    CHECK(keys.lastFrame() == 4);
+}
+
+TEST_CASE("key_script: mixed case, digits, comma and any whitespace") {
+    const KeyScript keys = KeyScript::parse("  F*2@1\tUp\n, comma*2@3 7 ,*1@3 ");
+    CHECK(keys.pressesAt(1) == Keys{Key::F, Key::F, Key::Up, Key::Comma});
+    CHECK(keys.pressesAt(3) == Keys{Key::Comma, Key::Comma, Key::Digit7, Key::Comma});
+}
+
+TEST_CASE("key_script: the limits themselves are accepted") {
+    const std::string count = std::to_string(KeyScript::kMaxCount);
+    const std::string frame = std::to_string(KeyScript::kMaxFrame);
+    const KeyScript keys = KeyScript::parse("x*" + count + "@" + frame + " y@0");
+    CHECK(keys.pressesAt(KeyScript::kMaxFrame).size() == static_cast<std::size_t>(KeyScript::kMaxCount));
+    CHECK(keys.pressesAt(0) == Keys{Key::Y});
+}
+
+TEST_CASE("key_script: every bad token is named in a one-line message with the valid keys") {
+    const std::string too_many = "f*" + std::to_string(KeyScript::kMaxCount + 1);
+    const std::string too_late = "f@" + std::to_string(KeyScript::kMaxFrame + 1);
+    const char* const bad_tokens[] = {
+        "q!",   "left", "ff",   "f*0",  "f*-1", "f*x",  "f*",   "f*2*3", "f*+2", "f*1.5",
+        "f@",   "f@-1", "f@x",  "f@1@2", "f@3*2", "f@+1", "f@1e3", "*3",   "@5",   "*2@5",
+        "99999999999999999999", "f*99999999999999999999", "f@99999999999999999999",
+    };
+    std::vector<std::string> tokens(std::begin(bad_tokens), std::end(bad_tokens));
+    tokens.push_back(too_many);
+    tokens.push_back(too_late);
+    for (const std::string& token : tokens) {
+        // A good token before it must not hide the error.
+        const std::string message = error_of("g@2 " + token + " h");
+        INFO("token: " << token << "\nmessage: " << message);
+        CHECK_THAT(message, Catch::Contains("\"" + token + "\""));
+        CHECK_THAT(message, Catch::Contains("a-z, 0-9, comma, up, down"));
+        CHECK(message.find('\n') == std::string::npos);
+    }
+}
+
+TEST_CASE("key_script: the message says what is wrong with the token") {
+    CHECK_THAT(error_of("q*x"), Catch::Contains("count must be a whole number"));
+    CHECK_THAT(error_of("f*0"), Catch::Contains("count must be a whole number"));
+    CHECK_THAT(error_of("f@-1"), Catch::Contains("frame must be a whole number"));
+    CHECK_THAT(error_of("left@3"), Catch::Contains("unknown key \"left\""));
+    CHECK_THAT(error_of("@3"), Catch::Contains("key name must come first"));
+}

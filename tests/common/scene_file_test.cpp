@@ -1,0 +1,303 @@
+// Scene files: a good scene loads with exactly its numbers and every default filled in;
+// a bad one is refused with one line naming the file, the JSON path and the problem.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "scene_file.h"
+#include "scratch_folder.h"
+
+namespace fs = std::filesystem;
+using browser::BodyDescription;
+using browser::load_scene;
+using browser::SceneError;
+using browser::ShapeKind;
+using browser::Vec2;
+using browser::WorldSettings;
+
+namespace {
+
+using test::ScratchFolder;
+
+// 5.1's defaults differ from WorldSettings{} in gravity, movement and out-of-bounds
+// removal, so a test can tell a value taken from `defaults` from a member default.
+const WorldSettings kDemoDefaults{.gravity = {0.0, 20.0}, .movement = true, .remove_out_of_bounds = true};
+
+
+// The message load_scene refuses `file` with ("" when it loads).
+std::string refusal(const fs::path& file) {
+    try {
+        load_scene(file, kDemoDefaults);
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
+    ScratchFolder folder("example");
+    const fs::path file = folder.write("scene.json", R"({
+  "world": {
+    "width": 800, "height": 450,
+    "gravity": [0, 20],
+    "dt": 0.016666666666666666,
+    "relaxation_iterations": 15,
+    "correction_rate": 0.8,
+    "movement": true,
+    "positional_correction": true,
+    "remove_out_of_bounds": false
+  },
+  "bodies": [
+    {"shape": "rectangle", "center": [500, 200], "width": 400, "height": 20,
+     "mass": 0, "friction": 0.3, "restitution": 0, "angle": 2.8},
+    {"shape": "circle", "center": [100, 50], "radius": 20,
+     "mass": 5, "friction": 0.5, "restitution": 0.4,
+     "velocity": [10, 0], "angular_velocity": 0}
+  ]
+})");
+    // The chapter 4 defaults, so that every world value below must come from the file.
+    const auto scene = load_scene(file, WorldSettings{});
+
+    CHECK(scene.world == WorldSettings{.width = 800, .height = 450, .gravity = {0, 20}, .dt = 0.016666666666666666,
+                                       .relaxation_iterations = 15, .correction_rate = 0.8, .movement = true,
+                                       .positional_correction = true, .remove_out_of_bounds = false});
+    CHECK(scene.world.dt == 1.0 / 60.0);
+    REQUIRE(scene.bodies.size() == 2);
+    CHECK(scene.bodies[0] == BodyDescription{.shape = ShapeKind::rectangle, .center = {500, 200}, .width = 400,
+                                             .height = 20, .mass = 0, .friction = 0.3, .restitution = 0,
+                                             .angle = 2.8});
+    CHECK(scene.bodies[1] == BodyDescription{.shape = ShapeKind::circle, .center = {100, 50}, .radius = 20,
+                                             .mass = 5, .friction = 0.5, .restitution = 0.4, .velocity = {10, 0},
+                                             .angular_velocity = 0});
+}
+
+TEST_CASE("scene_file: a minimal scene takes every default") {
+    ScratchFolder folder("minimal");
+    for (const std::string text : {"{}", R"({"bodies": []})", R"({"world": {}, "bodies": []})"}) {
+        INFO(text);
+        const auto scene = load_scene(folder.write("scene.json", text), kDemoDefaults);
+        CHECK(scene.world == kDemoDefaults);
+        CHECK(scene.bodies.empty());
+    }
+}
+
+TEST_CASE("scene_file: world keys left out come from the stage's defaults, one by one") {
+    ScratchFolder folder("partial_world");
+    const auto scene =
+        load_scene(folder.write("scene.json", R"({"world": {"gravity": [1.5, -2], "movement": false}})"),
+                   kDemoDefaults);
+    WorldSettings expected = kDemoDefaults;
+    expected.gravity = {1.5, -2};
+    expected.movement = false;
+    CHECK(scene.world == expected);
+}
+
+TEST_CASE("scene_file: body keys left out take the book's body defaults") {
+    ScratchFolder folder("body_defaults");
+    const auto scene = load_scene(folder.write("scene.json", R"({"bodies": [
+        {"shape": "rectangle", "center": [1, 2], "width": 3, "height": 4},
+        {"shape": "circle", "center": [5, 6], "radius": 7}]})"),
+                                  kDemoDefaults);
+    REQUIRE(scene.bodies.size() == 2);
+    for (const BodyDescription& body : scene.bodies) {
+        CHECK(body.mass == 1.0);
+        CHECK(body.friction == 0.8);
+        CHECK(body.restitution == 0.2);
+        CHECK(body.angle == 0.0);
+        CHECK(body.velocity == Vec2{0, 0});
+        CHECK(body.angular_velocity == 0.0);
+    }
+    CHECK(scene.bodies[0].width == 3.0);
+    CHECK(scene.bodies[0].height == 4.0);
+    CHECK(scene.bodies[1].radius == 7.0);
+}
+
+TEST_CASE("scene_file: bodies keep the file's order") {
+    ScratchFolder folder("order");
+    const auto scene = load_scene(folder.write("scene.json", R"({"bodies": [
+        {"shape": "circle", "center": [3, 0], "radius": 1},
+        {"shape": "rectangle", "center": [1, 0], "width": 1, "height": 1},
+        {"shape": "circle", "center": [2, 0], "radius": 1}]})"),
+                                  kDemoDefaults);
+    REQUIRE(scene.bodies.size() == 3);
+    CHECK(scene.bodies[0].center.x == 3.0);
+    CHECK(scene.bodies[1].center.x == 1.0);
+    CHECK(scene.bodies[1].shape == ShapeKind::rectangle);
+    CHECK(scene.bodies[2].center.x == 2.0);
+}
+
+TEST_CASE("scene_file: edge values that are allowed load") {
+    ScratchFolder folder("edges");
+    const auto scene = load_scene(folder.write("scene.json", R"({
+        "world": {"relaxation_iterations": 0, "correction_rate": 1, "gravity": [-1e300, 0]},
+        "bodies": [{"shape": "circle", "center": [0, 0], "radius": 1e-300,
+                    "mass": 0, "friction": 0, "restitution": 1, "angle": -7}]})"),
+                                  kDemoDefaults);
+    CHECK(scene.world.relaxation_iterations == 0);
+    CHECK(scene.world.correction_rate == 1.0);
+    CHECK(scene.world.gravity.x == -1e300);
+    CHECK(scene.bodies.at(0).radius == 1e-300);
+    CHECK(scene.bodies.at(0).restitution == 1.0);
+
+    // JSON does not tell 15 from 15.0; neither does a count.
+    CHECK(load_scene(folder.write("float.json", R"({"world": {"relaxation_iterations": 15.0}})"), kDemoDefaults)
+              .world.relaxation_iterations == 15);
+}
+
+TEST_CASE("scene_file: the format's own example of a refusal, word for word") {
+    ScratchFolder folder("headline");
+    const fs::path file = folder.write("scene.json", R"({"bodies": [
+        {"shape": "circle", "center": [0, 0], "radius": 1},
+        {"shape": "circle", "center": [0, 0], "radius": 1},
+        {"shape": "circle", "center": [0, 0], "radius": 1},
+        {"shape": "circle", "center": [0, 0], "radius": -2}]})");
+    CHECK(refusal(file) == file.string() + ": bodies[3].radius: must be a finite number > 0 (got -2)");
+}
+
+TEST_CASE("scene_file: a file that cannot be read is refused") {
+    ScratchFolder folder("unreadable");
+    CHECK(refusal(folder.path / "missing.json") ==
+          (folder.path / "missing.json").string() + ": cannot read: no such file");
+    CHECK(refusal(folder.path) == folder.path.string() + ": cannot read: it is a folder");
+}
+
+TEST_CASE("scene_file: malformed JSON is refused with line and column") {
+    ScratchFolder folder("malformed");
+    struct Case {
+        std::string text;
+        std::string where;
+    };
+    const std::vector<Case> cases{
+        {"{\n  \"bodies\": [\n    {\"shape\": \"circle\",}\n  ]\n}", "line 3, column 24"},  // trailing comma
+        {"{\"world\": {}} x", "line 1, column 15"},                                         // text after the end
+        {"{\n  \"world\": {\n", "line 3, column 1"},                                       // cut short
+        {"", "line 1, column 1"},                                                            // empty file
+        {"{\"é\": tru}", "line 1, column 10"},  // a column counts characters, not UTF-8 bytes
+    };
+    for (const Case& c : cases) {
+        INFO(c.text);
+        const fs::path file = folder.write("scene.json", c.text);
+        const std::string message = refusal(file);
+        CHECK(message.rfind(file.string() + ": " + c.where + ": malformed JSON: ", 0) == 0);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+}
+
+TEST_CASE("scene_file: every kind of bad value is refused with its path and problem") {
+    ScratchFolder folder("bad_values");
+    struct Case {
+        std::string text;
+        std::string expected;  // the message after "<file>: "; only its beginning for long ones
+    };
+    const std::string rectangle = R"("shape": "rectangle", "center": [0, 0], "width": 1, "height": 1)";
+    const std::string circle = R"("shape": "circle", "center": [0, 0], "radius": 1)";
+    const auto body = [](const std::string& keys) { return R"({"bodies": [{)" + keys + "}]}"; };
+    const auto world = [](const std::string& keys) { return R"({"world": {)" + keys + "}}"; };
+    const std::vector<Case> cases{
+        // The shape of the document.
+        {"[]", "top level: must be an object {...} (got [])"},
+        {"3", "top level: must be an object {...} (got 3)"},
+        {R"({"world": [800, 450]})", "world: must be an object {...} (got [800,450])"},
+        {R"({"bodies": {}})", "bodies: must be an array [...] of bodies (got {})"},
+        {R"({"bodies": [3]})", "bodies[0]: must be an object {...} (got 3)"},
+        // Unknown keys, everywhere, and keys of the other shape.
+        {R"({"bodys": []})", "bodys: unknown key; a scene takes world, bodies"},
+        {world(R"("gravty": [0, 1])"), "world.gravty: unknown key; world takes width, height, gravity, dt, "},
+        {body(circle + R"(, "raduis": 2)"), "bodies[0].raduis: unknown key; a circle body takes shape, center, "
+                                            "radius, mass, friction, restitution, angle, velocity, angular_velocity"},
+        {body(rectangle + R"(, "radius": 2)"), "bodies[0].radius: unknown key; a rectangle body takes shape, center, "
+                                               "width, height, mass, "},
+        {body(circle + R"(, "width": 2)"), "bodies[0].width: unknown key; a circle body takes "},
+        // Missing keys and unknown shapes.
+        {body(R"("center": [0, 0], "radius": 1)"), R"(bodies[0].shape: missing; every body needs "shape": )"},
+        {body(R"("shape": "circle", "radius": 1)"),
+         "bodies[0].center: missing; a circle body needs shape, center, radius"},
+        {body(R"("shape": "circle", "center": [0, 0])"), "bodies[0].radius: missing; a circle body needs "},
+        {body(R"("shape": "rectangle", "center": [0, 0], "height": 1)"),
+         "bodies[0].width: missing; a rectangle body needs shape, center, width, height"},
+        {body(R"("shape": "triangle", "center": [0, 0])"),
+         R"(bodies[0].shape: must be "rectangle" or "circle" (got "triangle"))"},
+        {body(R"("shape": 3)"), R"(bodies[0].shape: must be "rectangle" or "circle" (got 3))"},
+        // Wrong types.
+        {body(circle + R"(, "mass": "5")"), R"(bodies[0].mass: must be a finite number >= 0 (got "5"))"},
+        {world(R"("movement": 1)"), "world.movement: must be true or false (got 1)"},
+        {world(R"("positional_correction": "yes")"),
+         R"(world.positional_correction: must be true or false (got "yes"))"},
+        {world(R"("gravity": [0])"), "world.gravity: must be an array of two numbers [x, y] (got [0])"},
+        {world(R"("gravity": [0, 1, 2])"), "world.gravity: must be an array of two numbers [x, y] (got [0,1,2])"},
+        {world(R"("gravity": {"x": 0, "y": 1})"), "world.gravity: must be an array of two numbers [x, y] (got {"},
+        {world(R"("gravity": [0, "down"])"), R"(world.gravity[1]: must be a finite number (got "down"))"},
+        {body(circle + R"(, "velocity": [null, 0])"), "bodies[0].velocity[0]: must be a finite number (got null)"},
+        {world(R"("dt": true)"), "world.dt: must be a finite number > 0 (got true)"},
+        // Numbers too large for a double; JSON has no way to write NaN or Infinity at all.
+        {world(R"("gravity": [0, 1e999])"), "world.gravity[1]: must be a finite number (got 1e999)"},
+        {body(R"("shape": "circle", "center": [0, 0], "radius": -1e999)"),
+         "bodies[0].radius: must be a finite number (got -1e999)"},
+        {world(R"("dt": 1)" + std::string(400, '0')),
+         "world.dt: must be a finite number (got 1000000000000000000000000000000000000...)"},
+        // Out of range.
+        {body(R"("shape": "rectangle", "center": [0, 0], "width": 0, "height": 1)"),
+         "bodies[0].width: must be a finite number > 0 (got 0)"},
+        {body(R"("shape": "rectangle", "center": [0, 0], "width": 1, "height": -1.5)"),
+         "bodies[0].height: must be a finite number > 0 (got -1.5)"},
+        {body(R"("shape": "circle", "center": [0, 0], "radius": 0)"),
+         "bodies[0].radius: must be a finite number > 0 (got 0)"},
+        {body(circle + R"(, "mass": -1)"), "bodies[0].mass: must be a finite number >= 0 (got -1)"},
+        {body(circle + R"(, "friction": -0.1)"), "bodies[0].friction: must be a finite number >= 0 (got -0.1)"},
+        {body(circle + R"(, "restitution": -0.1)"),
+         "bodies[0].restitution: must be a finite number in [0, 1] (got -0.1)"},
+        {body(circle + R"(, "restitution": 1.5)"),
+         "bodies[0].restitution: must be a finite number in [0, 1] (got 1.5)"},
+        {world(R"("dt": 0)"), "world.dt: must be a finite number > 0 (got 0)"},
+        {world(R"("dt": -0.016)"), "world.dt: must be a finite number > 0 (got -0.016)"},
+        {world(R"("relaxation_iterations": -1)"),
+         "world.relaxation_iterations: must be a whole number in [0, 2147483647] (got -1)"},
+        {world(R"("relaxation_iterations": 2.5)"),
+         "world.relaxation_iterations: must be a whole number in [0, 2147483647] (got 2.5)"},
+        {world(R"("relaxation_iterations": 3000000000)"),
+         "world.relaxation_iterations: must be a whole number in [0, 2147483647] (got 3000000000)"},
+        {world(R"("correction_rate": -0.2)"), "world.correction_rate: must be a finite number in [0, 1] (got -0.2)"},
+        {world(R"("correction_rate": 1.01)"), "world.correction_rate: must be a finite number in [0, 1] (got 1.01)"},
+        {world(R"("width": 0)"), "world.width: must be a finite number > 0 (got 0)"},
+        {world(R"("height": -450)"), "world.height: must be a finite number > 0 (got -450)"},
+        // A key given twice: one of the two would be dropped without a word.
+        {body(circle + R"(, "mass": 1, "mass": 2)"), "bodies[0].mass: this key appears twice in the same object"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.text);
+        const fs::path file = folder.write("scene.json", c.text);
+        const std::string message = refusal(file);
+        CHECK(message.rfind(file.string() + ": " + c.expected, 0) == 0);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+}
+
+TEST_CASE("scene_file: messages stay one short line whatever the file holds") {
+    ScratchFolder folder("one_line");
+    // A key with a line break in it, quoted in the path.
+    const fs::path strange_key = folder.write("key.json", R"({"world": {"a\nb": 1}})");
+    CHECK(refusal(strange_key) == strange_key.string() + R"(: world["a\nb"]: unknown key; world takes width, height, )"
+                                                         "gravity, dt, relaxation_iterations, correction_rate, "
+                                                         "movement, positional_correction, remove_out_of_bounds");
+    // A long value, cut short.
+    const fs::path long_value = folder.write("long.json", R"({"bodies": ")" + std::string(500, 'x') + "\"}");
+    const std::string message = refusal(long_value);
+    CHECK(message.find('\n') == std::string::npos);
+    CHECK(message.size() < long_value.string().size() + 100);
+    CHECK(message.find("...)") != std::string::npos);
+}
+
+TEST_CASE("scene_file: the file name appears as it was given") {
+    ScratchFolder folder("as_given");
+    const fs::path file = folder.write("scene.json", R"({"world": {"dt": 0}})");
+    // The same file reached through a detour: the message repeats the detour.
+    const fs::path detour = folder.path / "." / "scene.json";
+    CHECK(refusal(detour).rfind(detour.string() + ": world.dt: ", 0) == 0);
+}

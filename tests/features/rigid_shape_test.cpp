@@ -1,0 +1,45 @@
+// Rectangle and Circle as built, against corners and normals worked out by hand
+// (every stage from 2.1 on).
+#include <catch2/catch.hpp>
+
+#include "circle.h"
+#include "rectangle.h"
+
+using engine::Vec2;
+
+namespace {
+void requireNear(Vec2 actual, Vec2 expected) {
+    CHECK(actual.x == Approx(expected.x).margin(1e-12));
+    CHECK(actual.y == Approx(expected.y).margin(1e-12));
+}
+}  // namespace
+
+TEST_CASE("rigid shape: a rectangle's corners run clockwise on screen from the top-left") {
+    const engine::Rectangle box({100, 50}, 40, 20);
+    CHECK(box.type() == engine::ShapeType::Rectangle);
+    CHECK(box.center() == Vec2{100, 50});
+    CHECK(box.width() == 40);
+    CHECK(box.height() == 20);
+    CHECK(box.angle() == 0);
+    // Half sizes 20 x 10 about (100, 50); y grows downwards, so "top" is the smaller y.
+    requireNear(box.vertices()[0], {80, 40});
+    requireNear(box.vertices()[1], {120, 40});
+    requireNear(box.vertices()[2], {120, 60});
+    requireNear(box.vertices()[3], {80, 60});
+}
+
+TEST_CASE("rigid shape: a rectangle's face normals point out of top, right, bottom, left") {
+    const engine::Rectangle box({-7.5, 3}, 2, 300);
+    requireNear(box.faceNormals()[0], {0, -1});
+    requireNear(box.faceNormals()[1], {1, 0});
+    requireNear(box.faceNormals()[2], {0, 1});
+    requireNear(box.faceNormals()[3], {-1, 0});
+}
+
+TEST_CASE("rigid shape: a circle's reference point starts straight above its centre") {
+    const engine::Circle ball({10, 20}, 5);
+    CHECK(ball.type() == engine::ShapeType::Circle);
+    CHECK(ball.radius() == 5);
+    requireNear(ball.center(), {10, 20});
+    requireNear(ball.startpoint(), {10, 15});
+}

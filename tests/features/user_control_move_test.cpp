@@ -1,0 +1,72 @@
+// W/A/S/D move and Q/E turn the selected object; R resets the world (every stage from 2.2 on).
+#include <catch2/catch.hpp>
+
+#include "my_game.h"
+#include "rectangle.h"
+#include "stage_fixture.h"
+
+using browser::Key;
+using engine::Vec2;
+
+TEST_CASE("user control: W A S D move the selected object 10 px, Q E turn it 0.1 rad") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    page.press(Key::Digit0);
+    const engine::RigidShape& cursor = page.core.object(0);
+    const Vec2 start = cursor.center();
+    const double angle = cursor.angle();
+    const Vec2 other = page.core.object(1).center();
+    page.press(Key::W);
+    CHECK(cursor.center() == Vec2{start.x, start.y - 10});  // up is -y on the canvas
+    page.press(Key::D, 3);
+    CHECK(cursor.center() == Vec2{start.x + 30, start.y - 10});
+    page.press(Key::S, 2);
+    page.press(Key::A);
+    CHECK(cursor.center() == Vec2{start.x + 20, start.y + 10});
+    page.press(Key::E, 3);
+    CHECK(cursor.angle() == Approx(angle + 0.3));
+    page.press(Key::Q);
+    CHECK(cursor.angle() == Approx(angle + 0.2));
+    // Only the selected object moved.
+    CHECK(page.core.object(1).center() == other);
+}
+
+TEST_CASE("user control: F and G create the new shape at the selected object") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    page.press(Key::Digit0);
+    page.press(Key::A, 5);
+    const Vec2 cursor = page.core.object(0).center();
+    page.press(Key::F);
+    page.press(Key::G);
+    const std::size_t n = page.core.objectCount();
+    CHECK(page.core.object(n - 2).center() == cursor);
+    CHECK(page.core.object(n - 1).center() == cursor);
+}
+
+TEST_CASE("user control: R keeps exactly the first kKeptOnReset objects and selects object 0") {
+    constexpr std::size_t kKept = engine::UserControl::kKeptOnReset;
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    page.press(Key::Digit0);
+    page.press(Key::F, 6);
+    page.press(Key::G, 6);
+    REQUIRE(page.core.objectCount() > kKept);
+    page.press(Key::Down, 100);
+    page.press(Key::R);
+    CHECK(page.core.objectCount() == kKept);
+    CHECK(page.core.selectedIndex() == 0);
+    page.press(Key::R);  // nothing more to remove
+    CHECK(page.core.objectCount() == kKept);
+}
+
+TEST_CASE("user control: a world of one object takes every key without leaving the list") {
+    test::StageFixture page;
+    page.core.add(engine::Rectangle({100, 100}, 20, 20));
+    for (Key key : {Key::Up, Key::Down, Key::Digit1, Key::Digit9, Key::W, Key::Q, Key::R, Key::H}) {
+        page.press(key);
+        CHECK(page.core.selectedIndex() == 0);
+        CHECK(page.core.objectCount() == 1);
+    }
+    page.frame();
+}

@@ -1,0 +1,52 @@
+// Stage 2.2: the stand-in behaviour that shows the loop running (a shape sinks 1 px per
+// update while it is above the bottom and not fixed) and the H key that fixes it.
+#include <catch2/catch.hpp>
+
+#include "circle.h"
+#include "rectangle.h"
+#include "stage_fixture.h"
+
+using browser::Key;
+using engine::Vec2;
+
+TEST_CASE("s2_2: a free shape sinks 1 px per update until its centre reaches the bottom") {
+    test::StageFixture page;  // 60 Hz frames: one update each
+    engine::Circle& ball = page.core.add(engine::Circle({100, 440}, 20));
+    const engine::Rectangle& pinned = page.core.add(engine::Rectangle({300, 100}, 20, 20, true));
+    for (int k = 1; k <= 5; ++k) {
+        page.frame();
+        CHECK(ball.center() == Vec2{100, 440.0 + k});
+    }
+    for (int k = 0; k < 20; ++k) page.frame();
+    CHECK(ball.center() == Vec2{100, 450});  // 450 is not above the bottom: it stops there
+    CHECK(pinned.center() == Vec2{300, 100});
+}
+
+TEST_CASE("s2_2: a 50 ms frame runs three updates, then draws the result once") {
+    test::StageFixture page(1, 50.0);
+    page.core.add(engine::Circle({100, 100}, 20));
+    page.frame();
+    CHECK(page.core.object(0).center() == Vec2{100, 103});
+    CHECK(page.window.document.ui_echo.find("Center: 100,103") != std::string::npos);
+    // The drawing shows the circle after the three updates: its lowest point is at y = 123.
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    CHECK(pixels.at(100, 122).r > 128);  // selected (object 0), so red
+    CHECK(pixels.at(100, 80) == browser::colors::kWhite);  // its old top, y = 80, is clear
+}
+
+TEST_CASE("s2_2: H toggles whether the selected object is fixed") {
+    test::StageFixture page;
+    engine::RigidShape& box = page.core.add(engine::Rectangle({200, 200}, 30, 30));
+    page.press(Key::H);
+    CHECK(box.isFixed());
+    page.frame();
+    CHECK(box.center() == Vec2{200, 200});
+    page.press(Key::H);
+    CHECK_FALSE(box.isFixed());
+    page.frame();
+    CHECK(box.center() == Vec2{200, 201});
+}
+
+TEST_CASE("s2_2: R keeps the cursor and the four borders") {
+    CHECK(engine::UserControl::kKeptOnReset == 5);
+}

@@ -1,0 +1,106 @@
+// Stage 3.1: the collision pass of the broad phase. It starts after the cursor and the
+// borders, reports every pair of overlapping bounding circles once, and the colliding
+// shapes are drawn green. Nothing moves by itself any more, and H is gone.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+#include "circle.h"
+#include "my_game.h"
+#include "physics.h"
+#include "rectangle.h"
+#include "stage_fixture.h"
+
+using browser::Key;
+using engine::Vec2;
+
+namespace {
+
+bool reported(const engine::Physics& physics, std::size_t first, std::size_t second) {
+    return std::ranges::any_of(physics.collisions(), [&](const engine::Collision& pair) {
+        return pair.first == first && pair.second == second;
+    });
+}
+
+bool looksGreen(browser::Color c) { return c.g > c.r + 40 && c.g > c.b + 40; }
+bool looksBlue(browser::Color c) { return c.b > c.r + 40 && c.b > c.g + 40; }
+
+}  // namespace
+
+TEST_CASE("s3_1: the pass leaves out the cursor and the borders, and reports a pair once") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    REQUIRE(engine::Physics::kFirstTestedObject == 5);
+    // Objects 5 and 6 sit on the cursor (object 0); 7 is far from both.
+    page.core.add(engine::Circle({400, 225}, 20));
+    page.core.add(engine::Rectangle({400, 225}, 30, 10));
+    page.core.add(engine::Circle({100, 100}, 20));
+    page.frame();
+    const auto& found = page.core.physics().collisions();
+    REQUIRE(found.size() == 1);
+    CHECK(reported(page.core.physics(), 5, 6));
+}
+
+TEST_CASE("s3_1: every overlapping pair, in the order i < j, and no other") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    // Three circles of radius 10 on a line, 15 apart: neighbours overlap, the ends (30
+    // apart, 20 needed) do not. A fourth touches the third exactly (20 apart).
+    page.core.add(engine::Circle({100, 100}, 10));  // 5
+    page.core.add(engine::Circle({115, 100}, 10));  // 6
+    page.core.add(engine::Circle({130, 100}, 10));  // 7
+    page.core.add(engine::Circle({150, 100}, 10));  // 8
+    page.frame();
+    const auto& found = page.core.physics().collisions();
+    CHECK(found.size() == 3);
+    CHECK(reported(page.core.physics(), 5, 6));
+    CHECK(reported(page.core.physics(), 6, 7));
+    CHECK(reported(page.core.physics(), 7, 8));
+}
+
+TEST_CASE("s3_1: colliding shapes are drawn green, the others keep their colour") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    // Centres on pixel centres, so the leftmost point of each outline is the centre of a
+    // pixel that the pen covers fully: (180.5, 100.5) is pixel (180, 100).
+    page.core.add(engine::Circle({200.5, 100.5}, 20));  // 5
+    page.core.add(engine::Circle({230.5, 100.5}, 20));  // 6: overlaps 5
+    page.core.add(engine::Circle({500.5, 300.5}, 20));  // 7: alone
+    page.frame();
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    CHECK(looksGreen(pixels.at(180, 100)));
+    CHECK(looksBlue(pixels.at(480, 300)));
+    // Moving circle 6 away turns both back to blue at the next pass.
+    page.press(Key::Digit6);
+    page.press(Key::D, 5);  // 50 px: centres 80 apart
+    page.press(Key::Digit0);
+    page.frame();
+    CHECK(page.core.physics().collisions().empty());
+    CHECK(looksBlue(page.window.document.canvas.pixels().at(180, 100)));
+}
+
+TEST_CASE("s3_1: nothing moves by itself, and H is gone from the keys and the echo") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    engine::Circle& ball = page.core.add(engine::Circle({300, 100}, 20));
+    page.press(Key::Digit5);
+    page.press(Key::H);
+    for (int k = 0; k < 30; ++k) page.frame();
+    CHECK(ball.center() == Vec2{300, 100});
+    const std::string& echo = page.window.document.ui_echo;
+    CHECK(echo.find("H:") == std::string::npos);
+    CHECK(echo.find("R: Reset System") != std::string::npos);
+}
+
+TEST_CASE("s3_1: a reset in a frame that runs no update draws no removed shape") {
+    test::StageFixture page(1, 5.0);  // 5 ms frames: most run no update
+    engine::buildScene(page.core);
+    page.press(Key::F);
+    page.press(Key::G);
+    for (int k = 0; k < 4; ++k) page.frame();  // 20 ms: one pass has seen objects 5 and 6
+    REQUIRE_FALSE(page.core.physics().collisions().empty());
+    page.press(Key::R);
+    page.frame();
+    CHECK(page.core.objectCount() == 5);
+}

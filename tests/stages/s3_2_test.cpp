@@ -1,0 +1,52 @@
+// Stage 3.2: the pass now runs the narrow phase, from object 0 on, and draws each
+// collision as an orange line; only circles can collide yet.
+#include <catch2/catch.hpp>
+
+#include "circle.h"
+#include "physics.h"
+#include "rectangle.h"
+#include "stage_fixture.h"
+
+using engine::Vec2;
+
+TEST_CASE("s3_2: rectangles report no collision yet, with rectangles or circles") {
+    const engine::Rectangle box({100, 100}, 40, 20);
+    const engine::Circle ball({100, 100}, 10);
+    CHECK_FALSE(box.collisionTest(box).has_value());
+    CHECK_FALSE(box.collisionTest(ball).has_value());
+    CHECK_FALSE(ball.collisionTest(box).has_value());
+    CHECK_FALSE(engine::findCollision(box, box).has_value());
+    CHECK_FALSE(engine::findCollision(ball, box).has_value());
+}
+
+TEST_CASE("s3_2: the pass starts at object 0 and keeps each normal from first to second") {
+    test::StageFixture page;
+    page.core.add(engine::Circle({130, 100}, 20));  // 0
+    page.core.add(engine::Circle({100, 100}, 20));  // 1: overlaps 0 by 10
+    page.core.add(engine::Rectangle({115, 100}, 50, 50));  // 2: over both, but a rectangle
+    page.frame();
+    const auto& found = page.core.physics().collisions();
+    REQUIRE(found.size() == 1);
+    CHECK(found[0].first == 0);
+    CHECK(found[0].second == 1);
+    // From circle 0 to circle 1 is to the left.
+    CHECK(found[0].info.normal() == Vec2{-1, 0});
+    CHECK(found[0].info.depth() == 10);
+}
+
+TEST_CASE("s3_2: each collision is drawn as an orange line from start to end") {
+    test::StageFixture page;
+    page.core.add(engine::Rectangle({700, 400}, 3, 3));  // a selected object away from the rest
+    // Centres on pixel centres, 30 apart on the row y = 100.5, radii 20: depth 10, and
+    // the segment runs from x = 110.5 (the right circle's rim) to 120.5 (the left one's).
+    page.core.add(engine::Circle({100.5, 100.5}, 20));
+    page.core.add(engine::Circle({130.5, 100.5}, 20));
+    page.frame();
+    const browser::Color middle = page.window.document.canvas.pixels().at(115, 100);
+    CHECK(middle == browser::colors::kOrange);
+    // Pulled apart, the line goes.
+    page.press(browser::Key::Digit2);
+    page.press(browser::Key::D, 2);
+    page.frame();
+    CHECK(page.window.document.canvas.pixels().at(115, 100) == browser::colors::kWhite);
+}
