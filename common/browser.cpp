@@ -2,10 +2,17 @@
 
 #include <unistd.h>
 
+#include <cstddef>
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
 #include <system_error>
+#include <vector>
 
+#include "contact_sheet.h"
+#include "gif_writer.h"
 #include "png_io.h"
 
 namespace browser {
@@ -14,6 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kFinalPicture = "final.png";
+constexpr const char* kContactSheet = "contact_sheet.png";
+constexpr const char* kAnimation = "animation.gif";
+constexpr const char* kUnfinishedAnimation = "animation.gif.partial";  // until its last frame is in
 
 std::string frame_picture_name(int frame) {
     char name[32];
@@ -44,9 +54,102 @@ void check_replaceable(const fs::path& out) {
     }
 }
 
-void save(const Document& document, const fs::path& path) {
-    write_png(path, render_page(document));
+std::string sheet_label(int frame, bool last) {
+    std::string label = "frame ";
+    label += std::to_string(frame);
+    if (last) label += " (final)";
+    return label;
 }
+
+// Everything a run writes into the staging folder, frame by frame: the saved pages,
+// final.png, the contact sheet and the GIF. A frame's page is drawn once at most,
+// however many of them want it, and only when one does.
+class Recorder {
+public:
+    Recorder(const Options& options, fs::path folder) : options_(options), folder_(std::move(folder)) {
+        if (options.every > 0) {
+            sheet_frames_ = contact_sheet_frames(options.frames, options.every);
+            sheet_.emplace(static_cast<int>(sheet_frames_.size()));
+        }
+    }
+
+    // Called after animation frame k (0 to options.frames - 1) has run.
+    void after_frame(int k, const Document& document) {
+        const bool last = k == options_.frames - 1;
+        const bool saved = options_.every > 0 && k % options_.every == 0;
+        const bool on_sheet = next_on_sheet_ < sheet_frames_.size() && sheet_frames_[next_on_sheet_] == k;
+        const bool in_gif = options_.gif && k % options_.gif_every == 0;
+        if (!last && !saved && !on_sheet && !in_gif) return;
+
+        const Image page = render_page(document);
+        if (saved) {
+            frame_names_.push_back(frame_picture_name(k));
+            write_png(folder_ / frame_names_.back(), page);
+        }
+        if (last) write_png(folder_ / kFinalPicture, page);
+        if (on_sheet) {
+            sheet_->add(page, sheet_label(k, last));
+            ++next_on_sheet_;
+        }
+        if (in_gif) {
+            if (!gif_) {
+                const int delay_cs = gif_delay_centiseconds(options_.frame_ms, options_.gif_every);
+                gif_ = std::make_unique<GifWriter>(folder_ / kUnfinishedAnimation, page.width, page.height, delay_cs);
+            }
+            gif_->add(page);
+        }
+    }
+
+    // Called after the last frame: writes what needed the whole run.
+    void finish() {
+        if (sheet_) write_png(folder_ / kContactSheet, sheet_->picture());
+        if (gif_) {
+            gif_->close();
+            fs::rename(folder_ / kUnfinishedAnimation, folder_ / kAnimation);
+        }
+    }
+
+    // The one line a successful run prints, e.g. "wrote 3 pictures to out/s2_2/
+    // (final.png, frame_0000.png, frame_0030.png), contact_sheet.png and
+    // animation.gif (30 frames)".
+    std::string summary(const fs::path& out) const {
+        const std::size_t pictures = frame_names_.size() + 1;
+        std::string text = "wrote ";
+        text += std::to_string(pictures);
+        text += pictures == 1 ? " picture to " : " pictures to ";
+        text += (out / "").string();
+        text += " (";
+        text += kFinalPicture;
+        if (frame_names_.size() == 1) text += ", " + frame_names_.front();
+        if (frame_names_.size() == 2) text += ", " + frame_names_.front() + ", " + frame_names_.back();
+        if (frame_names_.size() > 2) text += ", " + frame_names_.front() + " ... " + frame_names_.back();
+        text += ")";
+
+        std::vector<std::string> others;
+        if (sheet_) others.emplace_back(kContactSheet);
+        if (gif_) {
+            std::string gif = kAnimation;
+            gif += " (";
+            gif += std::to_string(gif_->pictures());
+            gif += gif_->pictures() == 1 ? " frame)" : " frames)";
+            others.push_back(gif);
+        }
+        for (std::size_t i = 0; i < others.size(); ++i) {
+            text += i + 1 < others.size() ? ", " : " and ";
+            text += others[i];
+        }
+        return text;
+    }
+
+private:
+    const Options& options_;
+    fs::path folder_;
+    std::vector<std::string> frame_names_;
+    std::vector<int> sheet_frames_;  // ascending frame numbers
+    std::size_t next_on_sheet_ = 0;  // index into sheet_frames_
+    std::optional<ContactSheet> sheet_;
+    std::unique_ptr<GifWriter> gif_;
+};
 
 // Moves `staging` to `out`, keeping the old `out` aside until the move has worked.
 void replace_folder(const fs::path& staging, const fs::path& out, const std::string& suffix) {
@@ -69,18 +172,17 @@ void replace_folder(const fs::path& staging, const fs::path& out, const std::str
     fs::remove_all(old, ignored);
 }
 
-std::string summary(int pictures, const fs::path& out, const std::vector<std::string>& frame_names) {
-    std::string text = "wrote " + std::to_string(pictures) + (pictures == 1 ? " picture" : " pictures") +
-                       " to " + (out / "").string() + " (" + kFinalPicture;
-    if (frame_names.size() == 1) text += ", " + frame_names.front();
-    if (frame_names.size() == 2) text += ", " + frame_names.front() + ", " + frame_names.back();
-    if (frame_names.size() > 2) text += ", " + frame_names.front() + " ... " + frame_names.back();
-    return text + ")";
-}
-
 }  // namespace
 
 int run(PageScripts& scripts, Window& window, const Options& options) {
+    // parse_command_line never gives these; a test or a stage that builds Options by hand might.
+    if (options.frames < 1 || (options.gif && options.gif_every < 1)) {
+        throw std::invalid_argument("browser::run: options.frames and options.gif_every must be at least 1");
+    }
+    if (options.gif && !gif_supported()) {
+        std::cerr << kNoGifSupport << '\n';
+        return 2;
+    }
     Document& document = window.document;
     Clock& clock = window.clock;
     const fs::path out = folder_path(options.out_dir);
@@ -104,21 +206,18 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         fs::create_directory(staging);
         staging_made = true;
 
-        std::vector<std::string> frame_names;
+        Recorder recorder(options, staging);
         for (int k = 0; k < options.frames; ++k) {
             clock.advanceFrame();
             for (const Key key : options.keys.pressesAt(k)) scripts.onKeyDown(key);
             scripts.onAnimationFrame();
-            if (options.every > 0 && k % options.every == 0) {
-                frame_names.push_back(frame_picture_name(k));
-                save(document, staging / frame_names.back());
-            }
+            recorder.after_frame(k, document);
         }
-        save(document, staging / kFinalPicture);
+        recorder.finish();
 
         replace_folder(staging, out, suffix);
         staging_made = false;
-        std::cout << summary(static_cast<int>(frame_names.size()) + 1, out, frame_names) << '\n';
+        std::cout << recorder.summary(out) << '\n';
         return 0;
     } catch (const FileError& error) {
         reason = error.what();

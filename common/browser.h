@@ -29,13 +29,18 @@ public:
     virtual void onAnimationFrame() = 0;  // the requestAnimationFrame callback
 };
 
-// Runs options.frames frames. Before frame k the clock advances by one frame, the
-// keys scripted for frame k are pressed, then the animation frame runs. The page is
-// saved as frame_NNNN.png after every K-th frame (options.every) and as final.png after
-// the last one. Everything is written into a fresh folder that replaces options.out_dir
-// only when the run succeeded, so a failed run never leaves a half-written folder.
-// Returns the exit status: 0, or 1 with a one-line message on stderr when the pictures
-// cannot be written.
+// Runs options.frames (>= 1) frames. Before frame k the clock advances by one frame,
+// the keys scripted for frame k are pressed, then the animation frame runs. The page is
+// saved as frame_NNNN.png after every K-th frame (options.every, k % K == 0) and as
+// final.png after the last one. With K > 0, contact_sheet.png shows those pages and the
+// last one small in a grid (contact_sheet.h). With options.gif, animation.gif gets the
+// page after every N-th frame (options.gif_every, k % N == 0: ceil(frames / N) GIF
+// frames, each shown for N frames' time). Everything is written into a fresh folder
+// that replaces options.out_dir only when the run succeeded, so a failed run never
+// leaves a half-written folder.
+// Returns the exit status: 0; 1 with a one-line message on stderr when the pictures
+// cannot be written; 2 with gif_writer.h's one line kNoGifSupport when options.gif
+// asks for a GIF that this build cannot write (nothing is written then).
 int run(PageScripts& scripts, Window& window, const Options& options);
 
 }  // namespace browser

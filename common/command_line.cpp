@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "gif_writer.h"
 #include "random.h"
 
 namespace browser {
@@ -67,6 +68,23 @@ double frame_ms_option(const std::string& text) {
     return *value;
 }
 
+// Whether the reader wants animation.gif: --gif or --no-gif, else the stage's choice.
+bool gif_wanted(bool gif_given, bool no_gif_given, bool stage_default) {
+    if (gif_given && no_gif_given) throw UsageError("--gif, --no-gif: give one or the other");
+    return gif_given || (stage_default && !no_gif_given);
+}
+
+// Whether this build can write the GIF that is wanted. Asking for it with --gif in a
+// build without giflib stops the run; a stage's default GIF is skipped with a note, so
+// the stage's default run still works there.
+bool gif_possible(bool gif_given, const std::string& program) {
+    if (gif_supported()) return true;
+    if (gif_given) throw UsageError(std::string(kNoGifSupport));
+    std::cerr << program << ": note: no animation.gif, as this build has no GIF support"
+              << " (install the Debian package libgif-dev and rebuild; --no-gif hides this note)\n";
+    return false;
+}
+
 // CLI11's messages are made for its own multi-line report; we print one line.
 std::string one_line(std::string text) {
     for (char& c : text) {
@@ -92,6 +110,8 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     std::string out_text = (std::filesystem::path("out") / defaults.id).string();
     std::string frames_text = std::to_string(defaults.frames);
     std::string every_text = std::to_string(defaults.every);
+    bool gif_flag = false, no_gif_flag = false;  // switches: no value to check
+    std::string gif_every_text = std::to_string(defaults.gif_every);
     std::string seed_text = std::to_string(Random::kDefaultSeed);
     std::string keys_text = defaults.keys;
     std::ostringstream default_frame_ms;
@@ -107,8 +127,14 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         ->type_name("DIR")->capture_default_str();
     app.add_option("--frames", frames_text, "how many animation frames to run")
         ->type_name("N")->capture_default_str();
-    app.add_option("--every", every_text, "also save every K-th frame as frame_NNNN.png (0: only final.png)")
+    app.add_option("--every", every_text,
+                   "also save every K-th frame as frame_NNNN.png, and all of them small on contact_sheet.png"
+                   " (0: only final.png)")
         ->type_name("K")->capture_default_str();
+    app.add_flag("--gif", gif_flag, "also write animation.gif, the page every N-th frame (see --gif-every)");
+    app.add_flag("--no-gif", no_gif_flag, "write no animation.gif, even where the stage writes one by default");
+    app.add_option("--gif-every", gif_every_text, "a GIF picture after frames 0, N, 2N, ...; each shows N frames' time")
+        ->type_name("N")->capture_default_str();
     app.add_option("--seed", seed_text, "seed of the random numbers")
         ->type_name("S")->capture_default_str();
     app.add_option("--keys", keys_text, "key presses, e.g. \"f*3 g@10 up e*5@20\"")
@@ -134,6 +160,16 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         // CLI11 takes the arguments last-first and without the program name.
         std::vector<std::string> arguments;
         for (int i = argc - 1; i >= 1; --i) arguments.emplace_back(argv[i]);
+        // CLI11 would read "--gif=false" as turning the flag on or off by its value; a
+        // switch with a value is more likely a slip, and --no-gif says it plainly.
+        for (const std::string& argument : arguments) {
+            for (const std::string_view flag : {"--gif=", "--no-gif="}) {
+                if (argument.starts_with(flag)) {
+                    throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
+                                     in_quotes(argument) + ")");
+                }
+            }
+        }
         try {
             app.parse(arguments);
         } catch (const CLI::CallForHelp&) {
@@ -162,6 +198,11 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
         options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
         options.every = int_option("--every", every_text, 0, KeyScript::kMaxFrame);
+        const bool want_gif = gif_wanted(gif_flag, no_gif_flag, defaults.gif);
+        options.gif_every = int_option("--gif-every", gif_every_text, 1, KeyScript::kMaxFrame);
+        if (app.count("--gif-every") > 0 && !want_gif) {
+            throw UsageError("--gif-every: there is no GIF to space out (add --gif)");
+        }
         options.seed = seed_option(seed_text);
         if (app.count("--frame-ms") > 0) {
             options.frame_ms = frame_ms_option(frame_ms_text);
@@ -182,6 +223,8 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
                              std::to_string(options.frames - 1) + (own_script ? "" : " (give --keys as well)"));
         }
         options.extra = extra;
+        // Last, so the note about a skipped GIF never comes with an error about another option.
+        options.gif = want_gif && gif_possible(gif_flag, program);
         return {std::move(options), 0};
     } catch (const UsageError& error) {
         std::cerr << program << ": " << error.what() << '\n';

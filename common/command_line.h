@@ -1,6 +1,7 @@
 #pragma once
 // One command-line shape for every stage (CLI11):
-//   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS  --help
+//   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS
+//   --gif  --no-gif  --gif-every N  --help
 // plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
 // list them in StageDefaults::extra_options and read their values from Options::extra.
 // CLI11 stays inside command_line.cpp, so stages never see it.
@@ -32,6 +33,8 @@ struct StageDefaults {
     std::string keys;         // the default key script
     int frames = 1;           // how many animation frames to run
     int every = 0;            // also write every K-th frame (0: only the last)
+    bool gif = false;         // also write animation.gif (--no-gif turns it off again)
+    int gif_every = 2;        // one GIF picture every N-th frame
     std::vector<ExtraOption> extra_options;  // the stage's own options, if any
 };
 
@@ -39,6 +42,8 @@ struct Options {
     std::filesystem::path out_dir;
     int frames = 1;
     int every = 0;
+    bool gif = false;   // write animation.gif: a picture after frames 0, N, 2N, ... (N = gif_every)
+    int gif_every = 2;
     std::uint64_t seed = 0;
     KeyScript keys;
     std::string keys_text;
@@ -51,7 +56,9 @@ struct Options {
 // program should stop now (0 after --help, 2 after a bad option, whose one-line
 // message has already been printed to stderr, prefixed by the program's file name).
 // A key scripted for a frame the run never reaches is a bad option too, since it would
-// silently do nothing.
+// silently do nothing, and so are --gif-every without a GIF and --gif in a build
+// without giflib (one line: gif_writer.h's kNoGifSupport). When the GIF is only the
+// stage's default, such a build says on stderr that it skips the GIF and runs on.
 struct ParsedCommandLine {
     std::optional<Options> options;
     int exit_status = 0;

@@ -61,10 +61,13 @@ std::vector<std::string> wrap(std::string line, int max_width) {
     return pieces;
 }
 
-// Draws one line with its top-left corner at (x, y). The font hands back quads (four
-// corners each, x y z floats then 4 colour bytes); with kTextScale whole, every quad
-// covers whole pixels, so each is a plain rectangle fill. Quads past the page are cut.
-void draw_text(Image& page, std::string text, int x, int y) {
+}  // namespace
+
+// The font hands back quads (four corners each, x y z floats then 4 colour bytes);
+// with kTextScale whole, every quad covers whole pixels, so each is a plain rectangle
+// fill.
+void draw_text(Image& picture, std::string_view line, int x, int y, Color color) {
+    std::string text = printable(line);  // also a mutable copy, which the font's functions take
     constexpr std::size_t kVertexBytes = 16, kQuadBytes = 4 * kVertexBytes;
     constexpr std::size_t kMostQuadsPerLetter = 16;
     std::vector<char> quads((text.size() + 1) * kMostQuadsPerLetter * kQuadBytes);
@@ -81,12 +84,10 @@ void draw_text(Image& page, std::string text, int x, int y) {
         const int x1 = x + static_cast<int>(bottom_right[0] * kTextScale);
         const int y1 = y + static_cast<int>(bottom_right[1] * kTextScale);
         for (int j = y0; j < y1; ++j) {
-            for (int i = x0; i < x1; ++i) page.set(i, j, kTextColor);
+            for (int i = x0; i < x1; ++i) picture.set(i, j, color);
         }
     }
 }
-
-}  // namespace
 
 Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
@@ -113,7 +114,7 @@ Image render_page(const Document& document) {
         const std::string line = printable(echo.substr(0, end));
         echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
         for (const std::string& piece : wrap(line, text_width_limit)) {
-            draw_text(page, piece, text_left, y);
+            draw_text(page, piece, text_left, y, kTextColor);
             y += kLineHeight;
         }
     }

@@ -3,6 +3,7 @@
 // right, the "UI echo" text panel (selected object, its state, the key controls).
 
 #include <string>
+#include <string_view>
 
 #include "canvas.h"
 #include "image.h"
@@ -19,5 +20,11 @@ inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
 // Composes the page: canvas with a thin frame, the echo panel beside it.
 // Size: (canvas width + kPanelWidth) x canvas height.
 Image render_page(const Document& document);
+
+// Writes one line of text in the page's font and size (letters about 14 pixels tall)
+// with its top-left corner at (x, y); what falls outside `picture` is cut off. The font
+// has printable ASCII only: a tab becomes four spaces, a carriage return nothing,
+// any other character a '?'.
+void draw_text(Image& picture, std::string_view text, int x, int y, Color color);
 
 }  // namespace browser

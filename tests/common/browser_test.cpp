@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "browser.h"
+#include "contact_sheet.h"
 #include "png_io.h"
 #include "scratch_folder.h"
 
@@ -131,11 +132,12 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
     SECTION("every 10 of 25 frames") {
         const Result result = run(options_for(out, 25, 10));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) ==
-              std::vector<std::string>{"final.png", "frame_0000.png", "frame_0010.png", "frame_0020.png"});
+        CHECK(names_in(out) == std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png",
+                                                        "frame_0010.png", "frame_0020.png"});
         CHECK(is_one_line(result.out));
         CHECK_THAT(result.out, Catch::StartsWith("wrote 4 pictures to "));
-        CHECK_THAT(result.out, Catch::Contains("frame_0000.png ... frame_0020.png"));
+        CHECK_THAT(result.out,
+                   Catch::EndsWith("(final.png, frame_0000.png ... frame_0020.png) and contact_sheet.png\n"));
         CHECK(result.err.empty());
     }
     SECTION("every 0: the final picture only") {
@@ -143,17 +145,19 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
         REQUIRE(result.status == 0);
         CHECK(names_in(out) == std::vector<std::string>{"final.png"});
         CHECK_THAT(result.out, Catch::StartsWith("wrote 1 picture to "));
+        CHECK_THAT(result.out, Catch::EndsWith("(final.png)\n"));
     }
     SECTION("every frame") {
         const Result result = run(options_for(out, 3, 1));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) ==
-              std::vector<std::string>{"final.png", "frame_0000.png", "frame_0001.png", "frame_0002.png"});
+        CHECK(names_in(out) == std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png",
+                                                        "frame_0001.png", "frame_0002.png"});
     }
     SECTION("frame numbers past 9999 grow beyond four digits") {
         const Result result = run(options_for(out, 10001, 10000));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) == std::vector<std::string>{"final.png", "frame_0000.png", "frame_10000.png"});
+        CHECK(names_in(out) ==
+              std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png", "frame_10000.png"});
     }
 }
 
@@ -167,6 +171,25 @@ TEST_CASE("browser: final.png shows the page after the last frame") {
     CHECK(final_picture.rgba == result.last_page.rgba);
     const browser::Image frame0 = browser::read_png(temp.path / "out" / "frame_0000.png");
     CHECK(frame0.rgba != final_picture.rgba);
+}
+
+TEST_CASE("browser: the contact sheet shows the saved frames and the final one, small") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    const Result result = run(options_for(out, 25, 10));  // frames 0, 10, 20 and 24
+    REQUIRE(result.status == 0);
+    const browser::Image sheet = browser::read_png(out / "contact_sheet.png");
+    const browser::Image thumbnail = browser::shrink(result.last_page, browser::kThumbnailScale);
+    const int cell_width = thumbnail.width + browser::kSheetMargin;
+    CHECK(sheet.width == browser::kSheetMargin + 4 * cell_width);
+    CHECK(sheet.height == browser::kSheetMargin + browser::kLabelHeight + thumbnail.height + browser::kSheetMargin);
+    // The fourth cell holds the final page.
+    const int left = browser::kSheetMargin + 3 * cell_width, top = browser::kSheetMargin + browser::kLabelHeight;
+    for (int y = 0; y < thumbnail.height; ++y) {
+        for (int x = 0; x < thumbnail.width; ++x) {
+            if (sheet.at(left + x, top + y) != thumbnail.at(x, y)) FAIL("thumbnail pixel (" << x << ", " << y << ")");
+        }
+    }
 }
 
 TEST_CASE("browser: a run replaces the whole output folder and leaves nothing beside it") {

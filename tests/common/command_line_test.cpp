@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "command_line.h"
+#include "gif_writer.h"
 #include "random.h"
 
 using browser::Key;
@@ -50,14 +51,14 @@ struct Outcome {
 };
 
 // Runs the parser as the program "/usr/bin/s9_9_test" would with these arguments.
-Outcome parse(std::vector<std::string> arguments) {
+Outcome parse(std::vector<std::string> arguments, const browser::StageDefaults& defaults = kDefaults) {
     arguments.insert(arguments.begin(), "/usr/bin/s9_9_test");
     std::vector<const char*> argv;
     for (const std::string& argument : arguments) argv.push_back(argument.c_str());
     argv.push_back(nullptr);  // as the real argv ends
     Outcome outcome;
     CapturedOutput captured;
-    outcome.parsed = browser::parse_command_line(static_cast<int>(arguments.size()), argv.data(), kDefaults);
+    outcome.parsed = browser::parse_command_line(static_cast<int>(arguments.size()), argv.data(), defaults);
     outcome.out = captured.out();
     outcome.err = captured.err();
     return outcome;
@@ -65,8 +66,9 @@ Outcome parse(std::vector<std::string> arguments) {
 
 // A bad command line stops with status 2 and exactly one line on stderr that starts
 // with the program's name and mentions `must_mention` (usually the option).
-void check_rejected(const std::vector<std::string>& arguments, const std::string& must_mention) {
-    const Outcome outcome = parse(arguments);
+void check_rejected(const std::vector<std::string>& arguments, const std::string& must_mention,
+                    const browser::StageDefaults& defaults = kDefaults) {
+    const Outcome outcome = parse(arguments, defaults);
     std::string shown;
     for (const std::string& argument : arguments) shown += " [" + argument + "]";
     INFO("arguments:" << shown << "\nstderr: " << outcome.err);
@@ -138,7 +140,8 @@ TEST_CASE("command_line: --help prints the usage and stops with status 0") {
         CHECK_FALSE(outcome.parsed.options.has_value());
         CHECK(outcome.err.empty());
         CHECK_THAT(outcome.out, Catch::Contains("9.9 A Test Stage"));
-        for (const char* option : {"--out", "--frames", "--every", "--seed", "--keys", "--frame-ms", "--scene", "--dump"}) {
+        for (const char* option : {"--out", "--frames", "--every", "--gif", "--no-gif", "--gif-every", "--seed", "--keys",
+                                   "--frame-ms", "--scene", "--dump"}) {
             CHECK_THAT(outcome.out, Catch::Contains(option));
         }
     }
@@ -214,4 +217,54 @@ TEST_CASE("command_line: a stage's own option that clashes is a programming erro
     clash.extra_options.push_back({.name = "--frames", .value_name = "N", .help = "again", .default_value = ""});
     const char* const argv[] = {"prog", nullptr};
     CHECK_THROWS_AS(browser::parse_command_line(1, argv, clash), std::logic_error);
+}
+
+TEST_CASE("command_line: --gif and --gif-every") {
+    const Outcome plain = parse({});
+    REQUIRE(plain.parsed.options.has_value());
+    CHECK_FALSE(plain.parsed.options->gif);
+    CHECK(plain.parsed.options->gif_every == 2);
+    if (browser::gif_supported()) {
+        const Outcome gif = parse({"--gif", "--gif-every", "5"});
+        REQUIRE(gif.parsed.options.has_value());
+        CHECK(gif.parsed.options->gif);
+        CHECK(gif.parsed.options->gif_every == 5);
+        CHECK(gif.err.empty());
+        CHECK(parse({"--gif", "--gif-every=1"}).parsed.options->gif_every == 1);
+        check_rejected({"--gif", "--gif-every", "0"},
+                       "--gif-every: must be a whole number from 1 to 10000000 (got \"0\")");
+        check_rejected({"--gif", "--gif-every", "2x"}, "--gif-every");
+    } else {
+        check_rejected({"--gif"}, std::string(browser::kNoGifSupport));
+    }
+    CHECK_FALSE(parse({"--no-gif"}).parsed.options->gif);
+    check_rejected({"--gif-every", "3"}, "--gif-every: there is no GIF to space out");
+    check_rejected({"--gif", "--no-gif"}, "--gif, --no-gif: give one or the other");
+    check_rejected({"--gif=false"}, "--gif: takes no value (got \"--gif=false\")");
+    check_rejected({"--no-gif=1"}, "--no-gif: takes no value");
+    check_rejected({"--gif", "yes"}, "unexpected argument \"yes\"");
+}
+
+TEST_CASE("command_line: a stage can write a GIF by default") {
+    browser::StageDefaults stage = kDefaults;
+    stage.gif = true;
+    stage.gif_every = 3;
+    const Outcome outcome = parse({}, stage);
+    REQUIRE(outcome.parsed.options.has_value());
+    CHECK(outcome.parsed.options->gif_every == 3);
+    if (browser::gif_supported()) {
+        CHECK(outcome.parsed.options->gif);
+        CHECK(outcome.err.empty());
+        CHECK(parse({"--gif-every", "4"}, stage).parsed.options->gif_every == 4);  // no --gif needed
+    } else {
+        // Without giflib the stage's default run still works, and says what it skips.
+        CHECK_FALSE(outcome.parsed.options->gif);
+        CHECK_THAT(outcome.err, Catch::StartsWith("s9_9_test: note: no animation.gif"));
+        CHECK(outcome.err.find('\n') == outcome.err.size() - 1);
+    }
+    const Outcome off = parse({"--no-gif"}, stage);
+    REQUIRE(off.parsed.options.has_value());
+    CHECK_FALSE(off.parsed.options->gif);
+    CHECK(off.err.empty());
+    check_rejected({"--no-gif", "--gif-every", "4"}, "--gif-every", stage);
 }
