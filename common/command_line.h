@@ -47,6 +47,7 @@ struct Options {
     std::uint64_t seed = 0;
     KeyScript keys;
     std::string keys_text;
+    bool keys_given = false;  // --keys was on the command line (not the stage's default script)
     double frame_ms = 1000.0 / 60.0;
     // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
     std::map<std::string, std::string> extra;

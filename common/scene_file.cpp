@@ -214,8 +214,12 @@ constexpr Rule kNotNegative{[](double v) { return std::isfinite(v) && v >= 0.0; 
 constexpr Rule kFraction{[](double v) { return v >= 0.0 && v <= 1.0; }, "must be a finite number in [0, 1]"};
 // A number of loop passes: whole (15.0 is as good as 15, JSON does not tell them
 // apart), and small enough for an int.
-constexpr Rule kCount{[](double v) { return v >= 0.0 && v <= INT_MAX && std::floor(v) == v; },
-                      "must be a whole number in [0, 2147483647]"};
+// Upper bounds keep a run finite: the canvas is a picture in memory (4096 x 4096 px is
+// 64 MiB), one simulated second takes 1/dt steps, and every step runs every pass.
+constexpr Rule kCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
+                      "must be a whole number in [0, 1000]"};
+constexpr Rule kCanvasSize{[](double v) { return v > 0.0 && v <= 4096.0; }, "must be a number in (0, 4096]"};
+constexpr Rule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; }, "must be a number in [1e-5, 1]"};
 
 double number(const json& value, const std::string& path, const Rule& rule) {
     if (!value.is_number() || !rule.accepts(value.get<double>())) refuse_value(path, rule.words, value);
@@ -316,10 +320,10 @@ void read_object(const json& object, const std::string& path, const Fields<Owner
 const Fields<WorldSettings>& world_fields() {
     using W = WorldSettings;
     static const Fields<W> fields{
-        {"width", &W::width, kPositive},
-        {"height", &W::height, kPositive},
+        {"width", &W::width, kCanvasSize},
+        {"height", &W::height, kCanvasSize},
         {"gravity", &W::gravity},
-        {"dt", &W::dt, kPositive},
+        {"dt", &W::dt, kTimeStep},
         {"relaxation_iterations", &W::relaxation_iterations, kCount},
         {"correction_rate", &W::correction_rate, kFraction},
         {"movement", &W::movement},

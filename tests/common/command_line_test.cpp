@@ -178,11 +178,19 @@ TEST_CASE("command_line: bad key scripts are usage errors") {
     check_rejected({"--keys", "left"}, "\"left\"");
 }
 
-TEST_CASE("command_line: keys after the last frame are a usage error") {
+TEST_CASE("command_line: the reader's keys after the last frame are a usage error") {
     check_rejected({"--keys", "f@30"}, "--keys");                 // the default run has frames 0..29
-    check_rejected({"--frames", "2"}, "--frames");                // the default script presses at frame 2
-    const Outcome fine = parse({"--frames", "3"});
-    CHECK(fine.parsed.exit_status == 0);
+    check_rejected({"--keys", "f@5", "--frames", "5"}, "--keys");
+}
+
+TEST_CASE("command_line: a shorter run simply stops before the rest of the default script") {
+    const Outcome shorter = parse({"--frames", "2"});             // the default script presses at frame 2
+    REQUIRE(shorter.parsed.options);
+    CHECK(shorter.parsed.options->frames == 2);
+    CHECK_FALSE(shorter.parsed.options->keys_given);
+    const Outcome own = parse({"--keys", "f"});
+    REQUIRE(own.parsed.options);
+    CHECK(own.parsed.options->keys_given);
 }
 
 TEST_CASE("command_line: unknown options, stray words and missing values") {

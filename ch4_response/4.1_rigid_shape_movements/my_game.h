@@ -1,0 +1,15 @@
+#pragma once
+// The book's MyGame.js: the scene the world starts with. Edit it to try another scene,
+// or give the program a scene file (--scene FILE, scene_io.h).
+
+#include "core.h"
+
+namespace engine {
+
+// Object 0 is a tiny square at the centre of the canvas, the cursor: new shapes appear
+// at the selected object, so moving the cursor chooses where they appear.
+// Objects 1 to 4 are thin rectangles along the edges of the canvas.
+// All five are static (mass 0), so gravity leaves them where they are.
+void buildScene(Core& core);
+
+}  // namespace engine

@@ -1,0 +1,67 @@
+#include "physics.h"
+
+namespace engine {
+
+namespace {
+
+// Moves the two shapes apart along the normal by `rate` of their overlap, shared in
+// proportion to their inverse masses: a shape twice as heavy moves half as far, a
+// static one not at all, and the pair's centre of mass stays where it was.
+void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate) {
+    const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
+    const Vec2 correction = info.normal() * amount;  // the normal points from a to b
+    a.move(correction * -a.invMass());
+    b.move(correction * b.invMass());
+}
+
+// What a collision does to the pair. In this project: push them apart.
+void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
+                      const browser::WorldSettings& world) {
+    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
+}
+
+}  // namespace
+
+std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b) {
+    if (!a.boundTest(b)) return std::nullopt;
+    std::optional<CollisionInfo> info = a.collisionTest(b);
+    // A normal with a negative component along the line between the centres points
+    // from b towards a.
+    if (info && info->normal().dot(b.center() - a.center()) < 0) info->changeDir();
+    return info;
+}
+
+void Physics::collision(ShapeList shapes, const browser::WorldSettings& world) {
+    collisions_.clear();
+    for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
+}
+
+// Every pair is resolved as soon as it is found, so the pairs after it already see the
+// shapes where that correction left them.
+void Physics::relaxationPass(ShapeList shapes, const browser::WorldSettings& world) {
+    collisions_.clear();
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        for (std::size_t j = i + 1; j < shapes.size(); ++j) {
+            RigidShape& a = *shapes[i];
+            RigidShape& b = *shapes[j];
+            // Nothing moves two static shapes, so they are not even tested.
+            if (a.isStatic() && b.isStatic()) continue;
+            const std::optional<CollisionInfo> info = findCollision(a, b);
+            if (!info) continue;
+            collisions_.push_back({i, j, *info});
+            resolveCollision(a, b, *info, world);
+        }
+    }
+}
+
+void Physics::drawCollisions(browser::Canvas& context) const {
+    context.setStrokeStyle(browser::colors::kOrange);
+    for (const Collision& pair : collisions_) {
+        context.beginPath();
+        context.moveTo(pair.info.start().x, pair.info.start().y);
+        context.lineTo(pair.info.end().x, pair.info.end().y);
+        context.stroke();
+    }
+}
+
+}  // namespace engine

@@ -1,0 +1,125 @@
+// Positional correction and relaxation (every stage from 4.2 on), with movement off so
+// that nothing but the correction moves the shapes.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "circle.h"
+#include "my_game.h"
+#include "physics.h"
+#include "rectangle.h"
+#include "world_fixture.h"
+
+using browser::Key;
+using engine::Vec2;
+
+namespace {
+
+// Every pass removes 80% of what is left of an overlap, so after the 15 passes of one
+// step 0.2^15 of it remains.
+const double kLeftAfterOneStep = std::pow(1 - engine::kPosCorrectionRate, engine::kRelaxationCount);
+
+// The deepest overlap between two shapes that are not both static.
+double deepestOverlap(const engine::Core& core) {
+    double deepest = 0;
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        for (std::size_t j = i + 1; j < core.objectCount(); ++j) {
+            if (core.object(i).isStatic() && core.object(j).isStatic()) continue;
+            if (const auto info = engine::findCollision(core.object(i), core.object(j))) {
+                deepest = std::max(deepest, info->depth());
+            }
+        }
+    }
+    return deepest;
+}
+
+}  // namespace
+
+TEST_CASE("positional correction: two circles part by inverse mass, 80% of the overlap a pass") {
+    REQUIRE(engine::kRelaxationCount == 15);
+    REQUIRE(engine::kPosCorrectionRate == 0.8);
+    test::WorldFixture page(test::world(false));
+    // Radii 10, centres 15 apart: 5 px deep along +x. Masses 1 and 3: inverse masses 1
+    // and 1/3, so the light one takes 3/4 of every move and the heavy one 1/4.
+    engine::Circle& light = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
+    engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
+    page.steps(1);
+    const double parted = 5 * (1 - kLeftAfterOneStep);
+    CHECK(light.center().x == Approx(100 - parted * 3 / 4).margin(1e-9));
+    CHECK(heavy.center().x == Approx(115 + parted / 4).margin(1e-9));
+    CHECK(light.center().y == 100);
+    // The pair's centre of mass has not moved: 1 * 100 + 3 * 115 = 445.
+    CHECK(light.center().x + 3 * heavy.center().x == Approx(445).epsilon(1e-15));
+    // The last pass still found the pair, 5 * 0.2^14 deep, and drew it.
+    REQUIRE(page.core.physics().collisions().size() == 1);
+    CHECK(page.core.physics().collisions()[0].info.depth() == Approx(5 * kLeftAfterOneStep / 0.2).margin(1e-12));
+}
+
+TEST_CASE("positional correction: a static shape does not move; two static shapes are not even tested") {
+    test::WorldFixture page(test::world(false));
+    engine::Rectangle& floor = page.core.add(engine::Rectangle({100, 110}, 200, 20, {.mass = 0}));
+    engine::Rectangle& wall = page.core.add(engine::Rectangle({190, 100}, 20, 100, {.mass = 0}));
+    engine::Circle& ball = page.core.add(engine::Circle({50, 95}, 10));  // 5 px into the floor's top at y = 100
+    page.steps(1);
+    CHECK(floor.center() == Vec2{100, 110});
+    CHECK(wall.center() == Vec2{190, 100});  // floor and wall overlap, and stay so
+    CHECK(ball.center().x == 50);
+    CHECK(ball.center().y == Approx(95 - 5 * (1 - kLeftAfterOneStep)).margin(1e-9));
+    for (const engine::Collision& pair : page.core.physics().collisions()) CHECK(pair.second == 2);
+}
+
+TEST_CASE("positional correction: M turns it off and on again") {
+    test::WorldFixture page(test::world(false));
+    engine::Circle& a = page.core.add(engine::Circle({100, 100}, 10));
+    engine::Circle& b = page.core.add(engine::Circle({110, 100}, 10));
+    CHECK(page.core.settings().positional_correction);
+    page.press(Key::M);
+    CHECK_FALSE(page.core.settings().positional_correction);
+    page.steps(5);
+    CHECK(a.center() == Vec2{100, 100});
+    CHECK(b.center() == Vec2{110, 100});
+    CHECK(page.core.physics().collisions().size() == 1);  // still found, only not resolved
+    page.press(Key::M);
+    page.steps(1);
+    CHECK(b.center().x - a.center().x == Approx(20 - 10 * kLeftAfterOneStep).margin(1e-9));
+}
+
+TEST_CASE("positional correction: 20 shapes created at one point part within 200 steps") {
+    // The book's own experiment (4.2, Observation): movement off, 20 shapes made at the
+    // cursor with F and G, then positional correction on. Each step's 15 passes move
+    // every overlapping pair apart, but freeing one pair pushes shapes into others, so a
+    // pile takes several steps. Measured over 200 seeds: half the piles part within 4
+    // steps and nine in ten within 20; the slowest took 175, a row of rectangles
+    // jammed against the static cursor in the middle of the pile, which slides round it
+    // by about 2% of the overlap a step. Hence the bound of 200 steps (3.3 s) for each
+    // pile, and of 20 steps for the median of the ten tried here.
+    constexpr int kBound = 200;
+    constexpr int kMedianBound = 20;
+    constexpr double kTolerance = 0.5;  // px: what still counts as touching on screen
+    std::vector<int> steps_taken;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        test::WorldFixture page(test::world(false), seed);
+        engine::buildScene(page.core);
+        page.press(Key::M);  // off while the shapes are made, as the book suggests
+        for (int i = 0; i < 10; ++i) {
+            page.press(Key::F);
+            page.press(Key::G);
+        }
+        page.press(Key::M);
+        int steps = 0;
+        while (deepestOverlap(page.core) > kTolerance && steps <= kBound) {
+            page.steps(1);
+            ++steps;
+        }
+        INFO("seed " << seed);
+        CHECK(steps <= kBound);
+        steps_taken.push_back(steps);
+    }
+    std::sort(steps_taken.begin(), steps_taken.end());
+    CHECK(steps_taken[steps_taken.size() / 2] <= kMedianBound);
+    WARN("20 shapes at one point parted to within " << kTolerance << " px in " << steps_taken.front() << " to "
+                                                    << steps_taken.back() << " steps, median "
+                                                    << steps_taken[steps_taken.size() / 2]);
+}

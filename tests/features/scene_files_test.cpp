@@ -1,0 +1,193 @@
+// Scene files and state dumps (every stage from 4.1 on): how the stage uses them, end
+// to end through its program as a reader runs it. What load_scene accepts and refuses
+// is tested once, in tests/common/scene_file_test.cpp.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "png_io.h"
+#include "rectangle.h"
+#include "scene_file.h"
+#include "scene_io.h"
+#include "stage_program.h"
+#include "world_fixture.h"
+
+namespace fs = std::filesystem;
+using engine::Vec2;
+
+namespace {
+
+// Numbers chosen to be awkward in binary (0.1, 2.8, 1e-3) and of every kind a body has.
+constexpr const char* kScene = R"({
+  "bodies": [
+    {"shape": "rectangle", "center": [500.25, 200.1], "width": 400, "height": 20,
+     "mass": 0, "friction": 0.3, "restitution": 0, "angle": 2.8},
+    {"shape": "circle", "center": [100.5, 50.75], "radius": 20, "mass": 5, "friction": 0.5,
+     "restitution": 0.4, "velocity": [10.5, -3.25], "angular_velocity": -0.7},
+    {"shape": "rectangle", "center": [0.001, 449.999], "width": 12.5, "height": 7,
+     "angle": -0.1, "velocity": [1e-3, 0]}
+  ]
+})";
+
+// A run that writes its pictures and dump into `folder`. No keys are pressed: a stage's
+// default script may press keys later than the few frames these runs take.
+std::string arguments(const test::ScratchFolder& folder, const std::string& scene, const std::string& more) {
+    std::string text = more;
+    text.append(" --keys ''");
+    if (!scene.empty()) text.append(" --scene ").append(test::quoted(folder.path / scene));
+    text.append(" --dump ").append(test::quoted(folder.path / "dump.csv"));
+    text.append(" --out ").append(test::quoted(folder.path / "out"));
+    return text;
+}
+
+std::vector<test::DumpRow> rowsOfStep(const std::vector<test::DumpRow>& rows, long step) {
+    std::vector<test::DumpRow> found;
+    for (const test::DumpRow& row : rows) {
+        if (row.step == step) found.push_back(row);
+    }
+    return found;
+}
+
+}  // namespace
+
+TEST_CASE("scene files: bodies come in file order, turned, moving, with their attributes") {
+    const test::ScratchFolder folder("scene-build");
+    const browser::SceneDescription scene = browser::load_scene(folder.write("scene.json", kScene), engine::kBookWorld);
+    test::WorldFixture page(scene.world);
+    engine::buildScene(page.core, scene.bodies);
+    REQUIRE(page.core.objectCount() == 3);
+
+    const engine::RigidShape& platform = page.core.object(0);
+    CHECK(platform.type() == engine::ShapeType::Rectangle);
+    CHECK(platform.isStatic());
+    CHECK(platform.friction() == 0.3);
+    CHECK(platform.restitution() == 0);
+    CHECK(platform.center() == Vec2{500.25, 200.1});
+    CHECK(platform.angle() == 2.8);
+    // Turned as the book does, with rotate() after construction: the corners too.
+    const Vec2 corner = static_cast<const engine::Rectangle&>(platform).vertices()[0];
+    const Vec2 unturned{500.25 - 200, 200.1 - 10};
+    CHECK(corner.x == Approx(unturned.rotate(platform.center(), 2.8).x).margin(1e-9));
+    CHECK(corner.y == Approx(unturned.rotate(platform.center(), 2.8).y).margin(1e-9));
+
+    const engine::RigidShape& ball = page.core.object(1);
+    CHECK(ball.type() == engine::ShapeType::Circle);
+    CHECK(ball.invMass() == 0.2);
+    CHECK(ball.invInertia() == Approx(2.0 / (5 * 20 * 20)));
+    CHECK(ball.velocity() == Vec2{10.5, -3.25});
+    CHECK(ball.angularVelocity() == -0.7);
+
+    const engine::RigidShape& box = page.core.object(2);
+    CHECK(box.mass() == 1);  // the body defaults: mass 1, friction 0.8, restitution 0.2
+    CHECK(box.friction() == 0.8);
+    CHECK(box.restitution() == 0.2);
+}
+
+TEST_CASE("scene files: step 0 of the dump gives back every number of the scene file") {
+    const test::ScratchFolder folder("scene-round-trip");
+    folder.write("scene.json", kScene);
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "scene.json", "--frames 1 --every 0"));
+    INFO(run.error_text);
+    REQUIRE(run.status == 0);
+    const auto rows = rowsOfStep(test::readDump(folder.path / "dump.csv"), 0);
+    REQUIRE(rows.size() == 3);
+    struct Expected { const char* shape; double cx, cy, angle, vx, vy, w; };
+    const Expected expected[] = {
+        {"rectangle", 500.25, 200.1, 2.8, 0, 0, 0},
+        {"circle", 100.5, 50.75, 0, 10.5, -3.25, -0.7},
+        {"rectangle", 0.001, 449.999, -0.1, 1e-3, 0, 0},
+    };
+    for (std::size_t i = 0; i < 3; ++i) {
+        INFO("body " << i);
+        CHECK(rows[i].index == i);
+        CHECK(rows[i].shape == expected[i].shape);
+        // 17 significant digits read back to the very double the file gave.
+        CHECK(rows[i].cx == expected[i].cx);
+        CHECK(rows[i].cy == expected[i].cy);
+        CHECK(rows[i].angle == expected[i].angle);
+        CHECK(rows[i].vx == expected[i].vx);
+        CHECK(rows[i].vy == expected[i].vy);
+        CHECK(rows[i].angular_velocity == expected[i].w);
+    }
+}
+
+TEST_CASE("scene files: the scene's world runs the program: gravity, dt, movement, canvas") {
+    // gravity 30 px/s^2 and dt 0.01 s: 6 frames of 1000/60 ms are 100 ms, 10 steps;
+    // step k puts the ball at y = 100 + dt^2 g k (k + 1) / 2 (symplectic Euler).
+    const test::ScratchFolder folder("scene-world");
+    folder.write("scene.json", R"({"world": {"gravity": [0, 30], "dt": 0.01, "movement": true,
+                                              "width": 300, "height": 200},
+                                   "bodies": [{"shape": "circle", "center": [100, 100], "radius": 5}]})");
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "scene.json", "--frames 6 --every 0"));
+    INFO(run.error_text);
+    REQUIRE(run.status == 0);
+    const auto rows = test::readDump(folder.path / "dump.csv");
+    REQUIRE(rows.size() == 11);
+    for (long k = 0; k <= 10; ++k) {
+        INFO("step " << k);
+        CHECK(rows[k].step == k);
+        CHECK(rows[k].cy == Approx(100 + 0.01 * 0.01 * 30 * k * (k + 1) / 2).margin(1e-9));
+        CHECK(rows[k].vy == Approx(0.3 * k).margin(1e-9));
+    }
+    const browser::Image page = browser::read_png(folder.path / "out" / "final.png");
+    CHECK(page.height == 200);
+    CHECK(page.width == 300 + browser::kPanelWidth);
+}
+
+TEST_CASE("scene files: without --scene the dump starts from the book's scene") {
+    const test::ScratchFolder folder("scene-book");
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "", "--frames 1 --every 0"));
+    INFO(run.error_text);
+    REQUIRE(run.status == 0);
+    const auto rows = rowsOfStep(test::readDump(folder.path / "dump.csv"), 0);
+    REQUIRE(rows.size() >= 5);
+    // The cursor at the centre of the 800 x 450 canvas, then the borders.
+    CHECK(rows[0].cx == 400);
+    CHECK(rows[0].cy == 225);
+    CHECK(rows[1].cy == 0);
+    CHECK(rows[2].cy == 450);
+    CHECK(rows[3].cx == 0);
+    CHECK(rows[4].cx == 800);
+}
+
+TEST_CASE("scene files: a refused scene exits with 2 and one line, and writes nothing") {
+    struct Case { const char* name; const char* text; const char* says; };
+    const Case cases[] = {
+        {"not JSON", R"({"bodies": [)", "malformed JSON"},
+        {"a typo", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radus": 3}]})", "bodies[0].radus"},
+        {"a negative size", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radius": -2}]})",
+         "bodies[0].radius"},
+        {"a bad world", R"({"world": {"dt": 0}})", "world.dt"},
+    };
+    for (const Case& bad : cases) {
+        INFO(bad.name);
+        const test::ScratchFolder folder("scene-refused");
+        folder.write("bad.json", bad.text);
+        const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "bad.json", ""));
+        CHECK(run.status == 2);
+        CHECK(run.error_text.find("bad.json") != std::string::npos);
+        CHECK(run.error_text.find(bad.says) != std::string::npos);
+        CHECK(run.error_text.find('\n') == run.error_text.size() - 1);  // exactly one line
+        CHECK_FALSE(fs::exists(folder.path / "out"));
+        CHECK_FALSE(fs::exists(folder.path / "dump.csv"));
+        CHECK_FALSE(fs::exists(folder.path / "dump.csv.partial"));
+    }
+    const test::ScratchFolder folder("scene-missing");
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "missing.json", ""));
+    CHECK(run.status == 2);
+    CHECK(run.error_text.find("missing.json") != std::string::npos);
+    CHECK_FALSE(fs::exists(folder.path / "out"));
+}
+
+TEST_CASE("scene files: a dump that cannot be written stops the run before any picture") {
+    const test::ScratchFolder folder("scene-no-dump");
+    std::string command = "--frames 1 --keys '' --dump ";
+    command.append(test::quoted(folder.path / "no" / "such" / "dump.csv"));
+    command.append(" --out ").append(test::quoted(folder.path / "out"));
+    const test::ProgramRun run = test::runStageProgram(folder, command);
+    CHECK(run.status == 1);
+    CHECK(run.error_text.find("dump.csv") != std::string::npos);
+    CHECK_FALSE(fs::exists(folder.path / "out"));
+}

@@ -1,0 +1,69 @@
+// The echo panel (every stage from 4.1 on): the selected object's motion and
+// attributes, the flags and the keys, within what the page's text panel shows:
+// about 24 lines of at most 37 letters (common/page.cpp).
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+
+#include "circle.h"
+#include "my_game.h"
+#include "stage_fixture.h"
+
+using browser::Key;
+
+namespace {
+
+constexpr std::size_t kPanelLines = 24;
+constexpr std::size_t kPanelLetters = 37;
+
+bool shows(const std::string& echo, const std::string& line) {
+    INFO("looking for \"" << line << "\" in\n" << echo);
+    return echo.find(line) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitution, and the flags") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    const std::size_t id = page.core.objectCount();
+    const engine::PhysicalAttributes attributes{.mass = 2.5, .friction = 0.25, .restitution = 0.75};
+    engine::Circle& ball = page.core.add(engine::Circle({200, 100}, 10, attributes));
+    ball.setVelocity({12.5, -3});
+    ball.setAngularVelocity(0.25);
+    page.core.select(id);
+    page.frame();
+    const std::string& echo = page.window.document.ui_echo;
+    CHECK(shows(echo, "Id: " + std::to_string(id) + "\n"));
+    CHECK(shows(echo, "Center: 200,100\n"));
+    CHECK(shows(echo, "Velocity: 12.5,-3.00\n"));
+    CHECK(shows(echo, "Angular Velocity: 0.250\n"));
+    CHECK(shows(echo, "Mass: 2.50\n"));
+    CHECK(shows(echo, "Friction: 0.250\n"));
+    CHECK(shows(echo, "Restitution: 0.750\n"));
+    CHECK(shows(echo, "Movement: Off\n"));
+    page.press(Key::Comma);
+    page.press(Key::Digit0);  // the cursor: static
+    page.frame();
+    CHECK(shows(page.window.document.ui_echo, "Movement: On\n"));
+    CHECK(shows(page.window.document.ui_echo, "Mass: 0 (static)\n"));
+}
+
+TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    engine::Circle& ball = page.core.add(engine::Circle({-1234.5, -6789.25}, 10, {.mass = 0.001234}));
+    ball.setVelocity({-12345.6, -0.00123456});
+    ball.setAngularVelocity(-98765.4);
+    ball.rotate(-1234.5);
+    page.core.select(page.core.objectCount() - 1);
+    page.frame();
+    std::istringstream echo(page.window.document.ui_echo);
+    std::size_t lines = 0;
+    for (std::string line; std::getline(echo, line); ++lines) {
+        INFO("line " << lines << ": \"" << line << "\"");
+        CHECK(line.size() <= kPanelLetters);
+    }
+    CHECK(lines <= kPanelLines);
+}

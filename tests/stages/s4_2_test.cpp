@@ -1,0 +1,41 @@
+// Stage 4.2: colliding shapes are pushed apart, but their velocities are left alone;
+// the echo shows the positional-correction flag.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "circle.h"
+#include "my_game.h"
+#include "stage_fixture.h"
+#include "world_fixture.h"
+
+using engine::Vec2;
+
+TEST_CASE("s4_2: shapes that meet are kept apart, but keep their velocities") {
+    test::WorldFixture page(test::world(true, {0, 0}));
+    const test::ApproachingCircles pair(page);
+    engine::Circle& left = pair.left;
+    engine::Circle& right = pair.right;
+    double closest = 30;
+    for (int step = 0; step < 30; ++step) {
+        page.steps(1);
+        closest = std::min(closest, right.center().x - left.center().x);
+    }
+    // Each step moves them 2 px into each other and the next step's passes push them
+    // out again: they never cross, and never overlap by more than those 2 px.
+    CHECK(closest >= 20 - 2 - 1e-9);
+    CHECK(right.center().x > left.center().x);
+    CHECK(left.velocity() == Vec2{60, 0});
+    CHECK(right.velocity() == Vec2{-60, 0});
+}
+
+TEST_CASE("s4_2: the echo shows the positional correction flag and the M key") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    page.frame();
+    CHECK(page.window.document.ui_echo.find("Positional Correction: On\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("M: Positional Correction") != std::string::npos);
+    page.press(browser::Key::M);
+    page.frame();
+    CHECK(page.window.document.ui_echo.find("Positional Correction: Off\n") != std::string::npos);
+}

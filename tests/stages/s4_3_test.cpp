@@ -1,0 +1,42 @@
+// Stage 4.3: the book's scene gains a static platform; impulses change linear
+// velocities only, so nothing turns.
+#include <catch2/catch.hpp>
+
+#include "circle.h"
+#include "my_game.h"
+#include "platform_check.h"
+#include "rectangle.h"
+#include "world_fixture.h"
+
+using engine::Vec2;
+
+TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), kept by a reset") {
+    test::WorldFixture page(test::world(true));
+    engine::buildScene(page.core);
+    REQUIRE(page.core.objectCount() == 6);
+    REQUIRE(engine::UserControl::kKeptOnReset == 6);
+    test::checkPlatform(page.core.object(5), {.center = {200, 400}, .friction = 1, .restitution = 0});
+}
+
+TEST_CASE("s4_3: a circle dropped on the platform comes to rest on it") {
+    test::WorldFixture page(test::world(true));
+    engine::buildScene(page.core);
+    engine::Circle& ball = page.core.add(engine::Circle({100, 300}, 20, {.restitution = 0.5}));
+    page.steps(600);  // 10 s
+    // e = min(0.5, 0) = 0: it stops dead on the platform's top (y = 390).
+    CHECK(ball.center().y == Approx(370).margin(0.1));
+    CHECK(ball.center().x == 100);
+    CHECK(std::abs(ball.velocity().y) < 0.2);  // what gravity adds back in one step
+}
+
+TEST_CASE("s4_3: an off-centre hit changes velocities only; nothing turns") {
+    test::WorldFixture page(test::world(true, {0, 0}));
+    engine::Rectangle& box = page.core.add(engine::Rectangle({200, 200}, 40, 20, {2, 0.5, 0.5}));
+    engine::Circle& ball = page.core.add(engine::Circle({229, 195}, 10, {1, 0.5, 0.5}));
+    ball.setVelocity({-50, 0});
+    page.steps(10);
+    CHECK(box.velocity().x < 0);
+    CHECK(box.angularVelocity() == 0);
+    CHECK(box.angle() == 0);
+    CHECK(ball.angularVelocity() == 0);
+}

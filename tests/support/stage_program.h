@@ -1,0 +1,84 @@
+#pragma once
+// Runs the stage's own program (STAGE_PROGRAM, set by cmake/Stage.cmake) the way a
+// reader does, and reads back the state dump it writes (--dump FILE, common/state_dump.h).
+
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include "scratch_folder.h"
+
+namespace test {
+
+struct ProgramRun {
+    int status = -1;         // the exit status; -1 when the program did not exit normally
+    std::string error_text;  // what it printed to stderr
+};
+
+inline std::string quoted(const std::filesystem::path& path) {
+    std::string text = "'";
+    text += path.string();
+    text += "'";
+    return text;
+}
+
+inline std::string readText(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// `arguments` as they would follow the program's name in a shell; its output goes to
+// files in `folder`.
+inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string& arguments) {
+    const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
+    std::string command = quoted(STAGE_PROGRAM);
+    command.append(" ").append(arguments).append(" >").append(quoted(out)).append(" 2>").append(quoted(err));
+    const int raw = std::system(command.c_str());
+    ProgramRun run;
+    if (raw != -1 && WIFEXITED(raw)) run.status = WEXITSTATUS(raw);
+    run.error_text = readText(err);
+    return run;
+}
+
+// One line of a state dump: step,index,shape,cx,cy,angle,vx,vy,angular_velocity.
+struct DumpRow {
+    long step = 0;
+    std::size_t index = 0;
+    std::string shape;
+    double cx = 0, cy = 0, angle = 0, vx = 0, vy = 0, angular_velocity = 0;
+};
+
+// Every row after the header. A field that does not read completely fails the test.
+inline std::vector<DumpRow> readDump(const std::filesystem::path& file) {
+    std::istringstream text(readText(file));
+    std::string line;
+    std::getline(text, line);
+    REQUIRE(line == "step,index,shape,cx,cy,angle,vx,vy,angular_velocity");
+    std::vector<DumpRow> rows;
+    while (std::getline(text, line)) {
+        std::vector<std::string> field;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) field.push_back(cell);
+        REQUIRE(field.size() == 9);
+        const auto number = [](const std::string& cell) {
+            std::size_t used = 0;
+            const double value = std::stod(cell, &used);
+            REQUIRE(used == cell.size());
+            return value;
+        };
+        rows.push_back({std::stol(field[0]), std::stoul(field[1]), field[2], number(field[3]), number(field[4]),
+                        number(field[5]), number(field[6]), number(field[7]), number(field[8])});
+    }
+    return rows;
+}
+
+}  // namespace test
