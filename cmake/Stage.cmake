@@ -36,7 +36,8 @@ function(add_stage id)
   target_link_libraries(${id}_tests PRIVATE ${id}_engine catch2_main)
   target_include_directories(${id}_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
   target_compile_definitions(${id}_tests PRIVATE
-    STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>")
+    STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
+    SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes")
 
   add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 

@@ -29,6 +29,8 @@ class UserControl {
 public:
     // The cursor, the four borders and the platform of my_game survive a reset.
     static constexpr std::size_t kKeptOnReset = 6;
+    // H kicks every moving shape: each velocity component uniform in [-10, 10) px/s.
+    static constexpr double kExciteSpeed = 10.0;
 
     UserControl(Core& core, browser::Random& random) : core_(core), random_(random) {}
     void onKeyDown(browser::Key key);

@@ -19,7 +19,6 @@ constexpr double kSpeedStep = 1.0;         // px/s per I/J/K/L press
 constexpr double kSpinStep = 0.1;          // rad/s per U/O press
 constexpr double kMassStep = 1.0;          // per Z/X press
 constexpr double kSurfaceStep = 0.01;      // friction per C/V, restitution per B/N press
-constexpr double kExciteSpeed = 10.0;      // H: each velocity component from -10 to 10 px/s
 }  // namespace
 
 void UserControl::onKeyDown(browser::Key key) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "rectangle.h"
@@ -17,7 +18,7 @@ using engine::Vec2;
 namespace {
 
 constexpr double kDt = 1.0 / 60.0;
-constexpr double kG = 10.0;
+constexpr double kG = engine::kGravity.y;  // the book's gravity, px/s^2 down (10 in chapter 4, 20 in the demo)
 constexpr Vec2 kNoGravity{0, 0};
 
 // Two circles of radius 10 on the x axis, 1 px into each other, about to meet head on
@@ -163,7 +164,7 @@ TEST_CASE("collision impulse: a box resting on a static floor stays put for 10,0
 
 TEST_CASE("collision impulse: 10,000 steps of the book's scene with shapes everywhere stay finite") {
     test::WorldFixture page(test::world(true), 7);
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.press(Key::Digit0);
     for (int row = 0; row < 3; ++row) {  // shapes from the left to the right of the canvas
         page.press(Key::A, 30);

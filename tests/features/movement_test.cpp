@@ -15,7 +15,7 @@ using engine::Vec2;
 
 namespace {
 constexpr double kDt = 1.0 / 60.0;
-constexpr double kG = 10.0;         // the book's gravity, px/s^2 down
+constexpr double kG = engine::kGravity.y;  // the book's gravity, px/s^2 down (10 in chapter 4, 20 in the demo)
 constexpr double kExact = 1e-9;     // px: positions a few hundred px, a few hundred steps
 }  // namespace
 
@@ -218,7 +218,8 @@ TEST_CASE("movement: I J K L U O change the velocities; C V B N friction and res
     CHECK(ball.restitution() == 1);
 }
 
-TEST_CASE("movement: H gives every non-static object a random velocity of up to 10 px/s a component") {
+TEST_CASE("movement: H gives every non-static object a random velocity of up to kExciteSpeed a component") {
+    constexpr double kKick = engine::UserControl::kExciteSpeed;  // 10 px/s in chapter 4, 250 in the demo
     test::WorldFixture page(test::world(false));
     engine::Rectangle& wall = page.core.add(engine::Rectangle({0, 0}, 10, 100, {.mass = 0}));
     for (int i = 0; i < 20; ++i) page.core.add(engine::Circle({100.0 + 30 * i, 100}, 10));
@@ -227,11 +228,11 @@ TEST_CASE("movement: H gives every non-static object a random velocity of up to 
     double fastest = 0;
     for (std::size_t i = 1; i < page.core.objectCount(); ++i) {
         const Vec2 v = page.core.object(i).velocity();
-        CHECK(std::abs(v.x) <= 10);
-        CHECK(std::abs(v.y) <= 10);
+        CHECK(std::abs(v.x) <= kKick);
+        CHECK(std::abs(v.y) <= kKick);
         fastest = std::max({fastest, std::abs(v.x), std::abs(v.y)});
     }
-    CHECK(fastest > 5);  // 40 uniform draws: all below 5 has odds 2^-40
+    CHECK(fastest > kKick / 2);  // 40 uniform draws: all below half has odds 2^-40
     CHECK(page.core.object(1).velocity() != page.core.object(2).velocity());
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "physics.h"
@@ -101,7 +102,7 @@ TEST_CASE("positional correction: 20 shapes created at one point part within 200
     std::vector<int> steps_taken;
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
         test::WorldFixture page(test::world(false), seed);
-        engine::buildScene(page.core);
+        test::buildBookScene(page.core, page.random);
         page.press(Key::M);  // off while the shapes are made, as the book suggests
         for (int i = 0; i < 10; ++i) {
             page.press(Key::F);

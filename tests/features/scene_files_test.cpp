@@ -13,6 +13,7 @@
 #include "scene_io.h"
 #include "stage_program.h"
 #include "world_fixture.h"
+#include "book_scene.h"
 
 namespace fs = std::filesystem;
 using engine::Vec2;
@@ -142,14 +143,14 @@ TEST_CASE("scene files: without --scene the dump starts from the book's scene") 
     INFO(run.error_text);
     REQUIRE(run.status == 0);
     const auto rows = rowsOfStep(test::readDump(folder.path / "dump.csv"), 0);
-    REQUIRE(rows.size() >= 5);
-    // The cursor at the centre of the 800 x 450 canvas, then the borders.
-    CHECK(rows[0].cx == 400);
-    CHECK(rows[0].cy == 225);
-    CHECK(rows[1].cy == 0);
-    CHECK(rows[2].cy == 450);
-    CHECK(rows[3].cx == 0);
-    CHECK(rows[4].cx == 800);
+    // The same scene built here, with the program's default seed for its random shapes.
+    test::WorldFixture page(engine::kBookWorld, browser::Random::kDefaultSeed);
+    test::buildBookScene(page.core, page.random);
+    REQUIRE(rows.size() == page.core.objectCount());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        CHECK(rows[i].cx == page.core.object(i).center().x);
+        CHECK(rows[i].cy == page.core.object(i).center().y);
+    }
 }
 
 TEST_CASE("scene files: a refused scene exits with 2 and one line, and writes nothing") {

@@ -6,8 +6,10 @@
 #include <sstream>
 #include <string>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
+#include "rectangle.h"
 #include "stage_fixture.h"
 
 using browser::Key;
@@ -26,17 +28,18 @@ bool shows(const std::string& echo, const std::string& line) {
 
 TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitution, and the flags") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    page.core.add(engine::Rectangle({100, 100}, 20, 20, {.mass = 0}));  // a static shape first, so the ball is not object 0
     const std::size_t id = page.core.objectCount();
     const engine::PhysicalAttributes attributes{.mass = 2.5, .friction = 0.25, .restitution = 0.75};
-    engine::Circle& ball = page.core.add(engine::Circle({200, 100}, 10, attributes));
+    engine::Circle& ball = page.core.add(engine::Circle({700, 430}, 10, attributes));
     ball.setVelocity({12.5, -3});
     ball.setAngularVelocity(0.25);
     page.core.select(id);
+    if (page.core.settings().movement) page.core.toggleMovement();  // so the frame shows these numbers
     page.frame();
     const std::string& echo = page.window.document.ui_echo;
     CHECK(shows(echo, "Id: " + std::to_string(id) + "\n"));
-    CHECK(shows(echo, "Center: 200,100\n"));
+    CHECK(shows(echo, "Center: 700,430\n"));
     CHECK(shows(echo, "Velocity: 12.5,-3.00\n"));
     CHECK(shows(echo, "Angular Velocity: 0.250\n"));
     CHECK(shows(echo, "Mass: 2.50\n"));
@@ -52,7 +55,7 @@ TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitu
 
 TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     engine::Circle& ball = page.core.add(engine::Circle({-1234.5, -6789.25}, 10, {.mass = 0.001234}));
     ball.setVelocity({-12345.6, -0.00123456});
     ball.setAngularVelocity(-98765.4);

@@ -1,6 +1,7 @@
 // W/A/S/D move and Q/E turn the selected object; R resets the world (every stage from 2.2 on).
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "my_game.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
@@ -10,7 +11,7 @@ using engine::Vec2;
 
 TEST_CASE("user control: W A S D move the selected object 10 px, Q E turn it 0.1 rad") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.press(Key::Digit0);
     const engine::RigidShape& cursor = page.core.object(0);
     const Vec2 start = cursor.center();
@@ -33,7 +34,7 @@ TEST_CASE("user control: W A S D move the selected object 10 px, Q E turn it 0.1
 
 TEST_CASE("user control: F and G create the new shape at the selected object") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.press(Key::Digit0);
     page.press(Key::A, 5);
     const Vec2 cursor = page.core.object(0).center();
@@ -47,7 +48,7 @@ TEST_CASE("user control: F and G create the new shape at the selected object") {
 TEST_CASE("user control: R keeps exactly the first kKeptOnReset objects and selects object 0") {
     constexpr std::size_t kKept = engine::UserControl::kKeptOnReset;
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.press(Key::Digit0);
     page.press(Key::F, 6);
     page.press(Key::G, 6);

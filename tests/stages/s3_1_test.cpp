@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <string>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "physics.h"
@@ -30,7 +31,7 @@ bool looksBlue(browser::Color c) { return c.b > c.r + 40 && c.b > c.g + 40; }
 
 TEST_CASE("s3_1: the pass leaves out the cursor and the borders, and reports a pair once") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     REQUIRE(engine::Physics::kFirstTestedObject == 5);
     // Objects 5 and 6 sit on the cursor (object 0); 7 is far from both.
     page.core.add(engine::Circle({400, 225}, 20));
@@ -44,7 +45,7 @@ TEST_CASE("s3_1: the pass leaves out the cursor and the borders, and reports a p
 
 TEST_CASE("s3_1: every overlapping pair, in the order i < j, and no other") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     // Three circles of radius 10 on a line, 15 apart: neighbours overlap, the ends (30
     // apart, 20 needed) do not. A fourth touches the third exactly (20 apart).
     page.core.add(engine::Circle({100, 100}, 10));  // 5
@@ -61,7 +62,7 @@ TEST_CASE("s3_1: every overlapping pair, in the order i < j, and no other") {
 
 TEST_CASE("s3_1: colliding shapes are drawn green, the others keep their colour") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     // Centres on pixel centres, so the leftmost point of each outline is the centre of a
     // pixel that the pen covers fully: (180.5, 100.5) is pixel (180, 100).
     page.core.add(engine::Circle({200.5, 100.5}, 20));  // 5
@@ -82,7 +83,7 @@ TEST_CASE("s3_1: colliding shapes are drawn green, the others keep their colour"
 
 TEST_CASE("s3_1: nothing moves by itself, and H is gone from the keys and the echo") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     engine::Circle& ball = page.core.add(engine::Circle({300, 100}, 20));
     page.press(Key::Digit5);
     page.press(Key::H);
@@ -95,7 +96,7 @@ TEST_CASE("s3_1: nothing moves by itself, and H is gone from the keys and the ec
 
 TEST_CASE("s3_1: a reset in a frame that runs no update draws no removed shape") {
     test::StageFixture page(1, 5.0);  // 5 ms frames: most run no update
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.press(Key::F);
     page.press(Key::G);
     for (int k = 0; k < 4; ++k) page.frame();  // 20 ms: one pass has seen objects 5 and 6

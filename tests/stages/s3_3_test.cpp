@@ -1,6 +1,7 @@
 // Stage 3.3: rectangles collide with rectangles; with circles not yet.
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "physics.h"
@@ -19,7 +20,7 @@ TEST_CASE("s3_3: the borders of the book's scene overlap at the four corners of 
     // Top and bottom run 800 x 3 along y = 0 and 450, left and right 3 x 450 along x = 0
     // and 800: each corner is a 1.5 x 1.5 overlap, parted by 1.5 px either way.
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.frame();
     const auto& found = page.core.physics().collisions();
     REQUIRE(found.size() == 4);

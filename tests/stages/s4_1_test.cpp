@@ -2,6 +2,7 @@
 // the book's scene is static.
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "world_fixture.h"
@@ -10,7 +11,7 @@ using engine::Vec2;
 
 TEST_CASE("s4_1: the cursor and the borders are static and stay put with movement on") {
     test::WorldFixture page(test::world(true));
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == engine::UserControl::kKeptOnReset);
     std::vector<Vec2> before;
     for (std::size_t i = 0; i < page.core.objectCount(); ++i) before.push_back(page.core.object(i).center());

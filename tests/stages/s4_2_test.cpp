@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "stage_fixture.h"
@@ -31,7 +32,7 @@ TEST_CASE("s4_2: shapes that meet are kept apart, but keep their velocities") {
 
 TEST_CASE("s4_2: the echo shows the positional correction flag and the M key") {
     test::StageFixture page;
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     page.frame();
     CHECK(page.window.document.ui_echo.find("Positional Correction: On\n") != std::string::npos);
     CHECK(page.window.document.ui_echo.find("M: Positional Correction") != std::string::npos);

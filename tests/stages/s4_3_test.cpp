@@ -2,6 +2,7 @@
 // velocities only, so nothing turns.
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "platform_check.h"
@@ -12,7 +13,7 @@ using engine::Vec2;
 
 TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), kept by a reset") {
     test::WorldFixture page(test::world(true));
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == 6);
     REQUIRE(engine::UserControl::kKeptOnReset == 6);
     test::checkPlatform(page.core.object(5), {.center = {200, 400}, .friction = 1, .restitution = 0});
@@ -20,7 +21,7 @@ TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), 
 
 TEST_CASE("s4_3: a circle dropped on the platform comes to rest on it") {
     test::WorldFixture page(test::world(true));
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     engine::Circle& ball = page.core.add(engine::Circle({100, 300}, 20, {.restitution = 0.5}));
     page.steps(600);  // 10 s
     // e = min(0.5, 0) = 0: it stops dead on the platform's top (y = 390).

@@ -2,6 +2,7 @@
 // turn shapes.
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "platform_check.h"
@@ -12,7 +13,7 @@ using engine::Vec2;
 
 TEST_CASE("s4_4: the scene has two turned static platforms, kept by a reset") {
     test::WorldFixture page(test::world(true));
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == 7);
     REQUIRE(engine::UserControl::kKeptOnReset == 7);
     test::checkPlatform(page.core.object(5), {.center = {200, 400}, .angle = 0.785, .friction = 1, .restitution = 0});
@@ -21,7 +22,7 @@ TEST_CASE("s4_4: the scene has two turned static platforms, kept by a reset") {
 
 TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it") {
     test::WorldFixture page(test::world(true));
-    engine::buildScene(page.core);
+    test::buildBookScene(page.core, page.random);
     engine::Circle& ball = page.core.add(engine::Circle({150, 300}, 15));  // 21 px above it
     page.steps(600);
     // Down the slope is to the right and down on screen, and rolling that way turns the

@@ -1,0 +1,40 @@
+#include "scene_io.h"
+
+#include "circle.h"
+#include "rectangle.h"
+
+namespace engine {
+
+namespace {
+
+RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
+    const PhysicalAttributes attributes{
+        .mass = body.mass, .friction = body.friction, .restitution = body.restitution};
+    if (body.shape == browser::ShapeKind::circle) return core.add(Circle(body.center, body.radius, attributes));
+    return core.add(Rectangle(body.center, body.width, body.height, attributes));
+}
+
+browser::ShapeKind kindOf(const RigidShape& shape) {
+    return shape.type() == ShapeType::Circle ? browser::ShapeKind::circle : browser::ShapeKind::rectangle;
+}
+
+}  // namespace
+
+void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies) {
+    for (const browser::BodyDescription& body : bodies) {
+        RigidShape& shape = addBody(core, body);
+        shape.rotate(body.angle);
+        shape.setVelocity(body.velocity);
+        shape.setAngularVelocity(body.angular_velocity);
+    }
+}
+
+void dumpState(browser::StateDump& dump, const Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        dump.row(core.stepCount(), i, browser::shape_name(kindOf(shape)), shape.center(), shape.angle(),
+                 shape.velocity(), shape.angularVelocity());
+    }
+}
+
+}  // namespace engine

@@ -1,0 +1,163 @@
+// Stage 5.1: the demo's scene is the book's MyGame, shapes that leave the canvas are
+// removed without costing anyone else a step, and a run repeats exactly for one seed.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "circle.h"
+#include "image_compare.h"
+#include "png_io.h"
+#include "rectangle.h"
+#include "scratch_folder.h"
+#include "stage_program.h"
+#include "world_fixture.h"
+#include "book_scene.h"
+
+using engine::Vec2;
+
+namespace {
+
+// The angle a platform is turned by, read from its top face's normal (straight up,
+// (0, -1), before any turn; a turn by a takes it to (sin a, -cos a)).
+double turnOf(const engine::Rectangle& box) {
+    const Vec2 n = box.faceNormals()[0];
+    return std::atan2(n.x, -n.y);
+}
+
+}  // namespace
+
+TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
+    test::WorldFixture page(engine::kBookWorld);
+    test::buildBookScene(page.core, page.random);
+    REQUIRE(page.core.objectCount() == 4 + 20);
+
+    struct Platform { Vec2 center; double width, height, angle, friction, restitution; };
+    const Platform platforms[] = {
+        {{500, 200}, 400, 20, 2.8, 0.3, 0.0},
+        {{200, 400}, 400, 20, 0.0, 1.0, 0.5},
+        {{100, 200}, 200, 20, 0.0, 0.8, 0.2},  // the book's default friction and restitution
+        {{10, 360}, 20, 100, 0.0, 0.0, 1.0},
+    };
+    for (std::size_t i = 0; i < 4; ++i) {
+        INFO("platform " << i);
+        const auto& box = dynamic_cast<const engine::Rectangle&>(page.core.object(i));
+        CHECK(box.isStatic());
+        CHECK(box.center() == platforms[i].center);
+        CHECK(box.width() == platforms[i].width);
+        CHECK(box.height() == platforms[i].height);
+        CHECK(turnOf(box) == Approx(platforms[i].angle).margin(1e-12));
+        CHECK(box.friction() == platforms[i].friction);
+        CHECK(box.restitution() == platforms[i].restitution);
+    }
+    CHECK(page.core.settings().gravity == Vec2{0, 20});
+    CHECK(page.core.settings().movement);
+    CHECK(page.core.settings().remove_out_of_bounds);
+    CHECK(engine::UserControl::kKeptOnReset == 7);
+    CHECK(engine::UserControl::kExciteSpeed == 250);
+}
+
+TEST_CASE("s5_1: the random shapes stay within the book's ranges over many seeds") {
+    double smallest_side = 1e9, largest_side = 0, smallest_radius = 1e9, largest_radius = 0, largest_mass = 0;
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+        test::WorldFixture page(engine::kBookWorld, seed);
+        test::buildBookScene(page.core, page.random);
+        for (std::size_t i = 4; i < page.core.objectCount(); ++i) {
+            const engine::RigidShape& shape = page.core.object(i);
+            // Rectangles and circles take turns, a rectangle first.
+            CHECK(shape.type() == (i % 2 == 0 ? engine::ShapeType::Rectangle : engine::ShapeType::Circle));
+            CHECK(shape.center().x >= 0);
+            CHECK(shape.center().x < 800);
+            CHECK(shape.center().y >= 0);
+            CHECK(shape.center().y < 225);  // the top half
+            CHECK(shape.mass() < 30);
+            CHECK(shape.friction() < 1);
+            CHECK(shape.restitution() < 1);
+            CHECK(std::abs(shape.velocity().x) <= 30);
+            CHECK(std::abs(shape.velocity().y) <= 30);
+            largest_mass = std::max(largest_mass, shape.mass());
+            if (const auto* box = dynamic_cast<const engine::Rectangle*>(&shape)) {
+                for (double side : {box->width(), box->height()}) {
+                    CHECK(side >= 10);
+                    CHECK(side < 60);
+                    smallest_side = std::min(smallest_side, side);
+                    largest_side = std::max(largest_side, side);
+                }
+            } else {
+                const auto& ball = dynamic_cast<const engine::Circle&>(shape);
+                CHECK(ball.radius() >= 10);
+                CHECK(ball.radius() < 30);
+                smallest_radius = std::min(smallest_radius, ball.radius());
+                largest_radius = std::max(largest_radius, ball.radius());
+            }
+        }
+    }
+    // 4,000 uniform draws each reach within half a percent of both ends of their range.
+    CHECK(smallest_side < 10.5);
+    CHECK(largest_side > 59.5);
+    CHECK(smallest_radius < 10.5);
+    CHECK(largest_radius > 29.5);
+    CHECK(largest_mass > 29.5);
+}
+
+TEST_CASE("s5_1: a shape leaving the canvas is gone the step after, and the others keep their step") {
+    test::WorldFixture page(engine::kBookWorld);
+    // Three balls far apart, falling; the middle one is about to cross the right edge
+    // at 60 px/s (1 px a step).
+    engine::Circle& left = page.core.add(engine::Circle({100, 100}, 5));
+    engine::Circle& leaving = page.core.add(engine::Circle({799.5, 100}, 5));
+    page.core.add(engine::Circle({300, 100}, 5));
+    leaving.setVelocity({60, 0});
+    page.steps(1);  // it moves to x = 800.5, outside, but is still in the list
+    REQUIRE(page.core.objectCount() == 3);
+    CHECK(leaving.center().x > 800);
+    const Vec2 last_before = page.core.object(2).center();
+    const Vec2 left_before = left.center();
+    page.steps(1);  // now it is removed, and both others still fall by one step
+    REQUIRE(page.core.objectCount() == 2);
+    CHECK(page.core.object(1).center().x == 300);
+    CHECK(page.core.object(1).center().y > last_before.y);  // the shape after it moved
+    CHECK(left.center().y > left_before.y);
+}
+
+TEST_CASE("s5_1: the same seed gives the same run, another seed another") {
+    const test::ScratchFolder folder("s5_1_repeat");
+    auto run = [&](const std::string& name, std::uint64_t seed) {
+        const std::string arguments = "--frames 90 --every 45 --no-gif --seed " + std::to_string(seed) +
+                                      " --out " + test::quoted(folder.path / name) + " --dump " +
+                                      test::quoted(folder.path / (name + ".csv"));
+        const test::ProgramRun result = test::runStageProgram(folder, arguments);
+        INFO(result.error_text);
+        REQUIRE(result.status == 0);
+        return test::readText(folder.path / (name + ".csv"));
+    };
+    const std::string first = run("first", 11), again = run("again", 11), other = run("other", 12);
+    CHECK(first == again);
+    CHECK(first != other);
+    for (const char* picture : {"final.png", "frame_0045.png", "contact_sheet.png"}) {
+        INFO(picture);
+        const auto difference = browser::compare_images(browser::read_png(folder.path / "first" / picture),
+                                                        browser::read_png(folder.path / "again" / picture), {});
+        CHECK(difference.same_size);
+        CHECK(difference.differing_pixels == 0);
+    }
+}
+
+TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
+    const test::ScratchFolder folder("s5_1_gif");
+    const test::ProgramRun result =
+        test::runStageProgram(folder, "--frames 20 --every 0 --out " + test::quoted(folder.path / "out"));
+    REQUIRE(result.status == 0);
+    const std::string gif = test::readText(folder.path / "out" / "animation.gif");
+    REQUIRE(gif.size() > 10);
+    CHECK(gif.substr(0, 6) == "GIF89a");
+    // The logical screen: width and height, little-endian, right after the signature.
+    const auto u16 = [&](std::size_t at) {
+        return static_cast<unsigned char>(gif[at]) | static_cast<unsigned char>(gif[at + 1]) << 8;
+    };
+    CHECK(u16(6) == 800 + browser::kPanelWidth);
+    CHECK(u16(8) == 450);
+}
