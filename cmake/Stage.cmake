@@ -35,6 +35,8 @@ function(add_stage id)
   add_executable(${id}_tests ${test_sources})
   target_link_libraries(${id}_tests PRIVATE ${id}_engine catch2_main)
   target_include_directories(${id}_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+  # Every test file includes Catch2's 17,000-line header: parse it once per executable.
+  target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
   target_compile_definitions(${id}_tests PRIVATE
     STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
     SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes")
