@@ -1,6 +1,7 @@
 #include "scene_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -12,6 +13,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -24,6 +26,40 @@ using json = nlohmann::json;
 
 std::string_view shape_name(ShapeKind shape) {
     return shape == ShapeKind::circle ? "circle" : "rectangle";
+}
+
+namespace {
+// Every value of each spelled enum, in declaration order, for reading and for messages.
+constexpr std::array kShapeKinds{ShapeKind::rectangle, ShapeKind::circle};
+constexpr std::array kIntegrators{Integrator::symplectic, Integrator::explicit_euler};
+constexpr std::array kBroadPhases{BroadPhase::bounding_circle, BroadPhase::all_pairs, BroadPhase::grid};
+constexpr std::array kFrictionModels{FrictionModel::book, FrictionModel::coulomb};
+
+const auto& all_values(ShapeKind) { return kShapeKinds; }
+const auto& all_values(Integrator) { return kIntegrators; }
+const auto& all_values(BroadPhase) { return kBroadPhases; }
+const auto& all_values(FrictionModel) { return kFrictionModels; }
+std::string_view spelling(ShapeKind value) { return shape_name(value); }
+std::string_view spelling(Integrator value) { return knob_name(value); }
+std::string_view spelling(BroadPhase value) { return knob_name(value); }
+std::string_view spelling(FrictionModel value) { return knob_name(value); }
+}  // namespace
+
+std::string_view knob_name(Integrator integrator) {
+    return integrator == Integrator::explicit_euler ? "explicit" : "symplectic";
+}
+
+std::string_view knob_name(BroadPhase broad_phase) {
+    switch (broad_phase) {
+        case BroadPhase::all_pairs: return "all_pairs";
+        case BroadPhase::grid: return "grid";
+        case BroadPhase::bounding_circle: break;
+    }
+    return "bounding_circle";
+}
+
+std::string_view knob_name(FrictionModel friction_model) {
+    return friction_model == FrictionModel::coulomb ? "coulomb" : "book";
 }
 
 namespace {
@@ -219,6 +255,8 @@ constexpr Rule kFraction{[](double v) { return v >= 0.0 && v <= 1.0; }, "must be
 constexpr Rule kCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
                       "must be a whole number in [0, 1000]"};
 constexpr Rule kCanvasSize{[](double v) { return v > 0.0 && v <= 4096.0; }, "must be a number in (0, 4096]"};
+constexpr Rule kSubsteps{[](double v) { return v >= 1.0 && v <= 1000.0 && std::floor(v) == v; },
+                         "must be a whole number in [1, 1000]"};
 constexpr Rule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; }, "must be a number in [1e-5, 1]"};
 
 double number(const json& value, const std::string& path, const Rule& rule) {
@@ -246,14 +284,20 @@ void read(const json& value, const std::string& path, const Rule&, bool& out) {
     out = value.get<bool>();
 }
 
-void read(const json& value, const std::string& path, const Rule&, ShapeKind& out) {
-    for (const ShapeKind shape : {ShapeKind::rectangle, ShapeKind::circle}) {
-        if (value.is_string() && value.get_ref<const std::string&>() == shape_name(shape)) {
-            out = shape;
+// A word from a fixed list: a shape, an integrator, a broad phase, a friction model.
+template <class Spelled>
+    requires std::is_enum_v<Spelled>
+void read(const json& value, const std::string& path, const Rule&, Spelled& out) {
+    std::string choices = "must be ";
+    for (const Spelled choice : all_values(out)) {
+        if (value.is_string() && value.get_ref<const std::string&>() == spelling(choice)) {
+            out = choice;
             return;
         }
+        if (choice != all_values(out).front()) choices.append(choice == all_values(out).back() ? " or " : ", ");
+        choices.append("\"").append(spelling(choice)).append("\"");
     }
-    refuse_value(path, R"(must be "rectangle" or "circle")", value);
+    refuse_value(path, choices, value);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -264,7 +308,9 @@ constexpr bool kRequired = true;
 template <class Owner>
 struct Field {
     const char* key;
-    std::variant<double Owner::*, int Owner::*, bool Owner::*, Vec2 Owner::*, ShapeKind Owner::*> member;
+    std::variant<double Owner::*, int Owner::*, bool Owner::*, Vec2 Owner::*, ShapeKind Owner::*,
+                 Integrator Owner::*, BroadPhase Owner::*, FrictionModel Owner::*>
+        member;
     Rule rule = kFinite;  // numbers, and both numbers of a vector
     bool required = false;
 };
@@ -333,6 +379,21 @@ const Fields<WorldSettings>& world_fields() {
     return fields;
 }
 
+const Fields<WorldSettings>& world_fields_with_knobs() {
+    using W = WorldSettings;
+    static const Fields<W> fields = [] {
+        Fields<W> all = world_fields();
+        all.insert(all.end(), {{"substeps", &W::substeps, kSubsteps},
+                               {"integrator", &W::integrator},
+                               {"broad_phase", &W::broad_phase},
+                               {"friction_model", &W::friction_model},
+                               {"rotation", &W::rotation},
+                               {"friction", &W::friction}});
+        return all;
+    }();
+    return fields;
+}
+
 // A body's keys depend on its shape: a radius on a rectangle is as wrong as a typo.
 // Listed in the order messages show them: what the body is, where, how big, the rest.
 Fields<BodyDescription> body_fields(ShapeKind shape) {
@@ -372,12 +433,13 @@ std::vector<BodyDescription> read_bodies(const json& list, const std::string& pa
     return bodies;
 }
 
-SceneDescription read_scene(const json& root, const WorldSettings& defaults) {
+SceneDescription read_scene(const json& root, const WorldSettings& defaults, WorldKeys keys) {
     if (!root.is_object()) refuse_value("", "must be an object {...}", root);
     refuse_unknown_keys(root, "", {"world", "bodies"}, "a scene");
     SceneDescription scene{defaults, {}};
     if (const auto world = root.find("world"); world != root.end()) {
-        read_object(*world, "world", world_fields(), "world", scene.world);
+        read_object(*world, "world", keys == WorldKeys::with_knobs ? world_fields_with_knobs() : world_fields(), "world",
+                    scene.world);
     }
     if (const auto bodies = root.find("bodies"); bodies != root.end()) scene.bodies = read_bodies(*bodies, "bodies");
     return scene;
@@ -385,9 +447,9 @@ SceneDescription read_scene(const json& root, const WorldSettings& defaults) {
 
 }  // namespace
 
-SceneDescription load_scene(const fs::path& file, const WorldSettings& defaults) {
+SceneDescription load_scene(const fs::path& file, const WorldSettings& defaults, WorldKeys keys) {
     try {
-        return read_scene(parse(read_text(file)), defaults);
+        return read_scene(parse(read_text(file)), defaults, keys);
     } catch (const Refusal& refusal) {
         std::string message = file.string();
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);

@@ -3,7 +3,7 @@
 // learner edits instead of the stage's code. In short:
 //   {"world":  {"width", "height", "gravity": [x, y], "dt", "relaxation_iterations",
 //               "correction_rate", "movement", "positional_correction",
-//               "remove_out_of_bounds"},
+//               "remove_out_of_bounds", and in stage 5.1 the knobs below},
 //    "bodies": [{"shape": "rectangle", "center": [x, y], "width", "height", ...},
 //               {"shape": "circle", "center": [x, y], "radius", ...}]}
 // where every body may also give mass, friction, restitution, angle, velocity [x, y] and
@@ -23,9 +23,22 @@
 
 namespace browser {
 
+// The knobs that trade speed against accuracy (stage 5.1 only; docs/scene_format.md).
+// Each enum's first value is what the book does.
+enum class Integrator { symplectic, explicit_euler };     // "symplectic", "explicit"
+enum class BroadPhase { bounding_circle, all_pairs, grid };  // "bounding_circle", ...
+enum class FrictionModel { book, coulomb };                // "book", "coulomb"
+
+// The spelling used in scene files, and in the bench's tables.
+std::string_view knob_name(Integrator integrator);
+std::string_view knob_name(BroadPhase broad_phase);
+std::string_view knob_name(FrictionModel friction_model);
+
 // The world's tunables. The member defaults are chapter 4's book values; 5.1 changes
 // gravity to (0, 20) and turns on movement and remove_out_of_bounds:
 //   WorldSettings{.gravity = {0, 20}, .movement = true, .remove_out_of_bounds = true}
+// The members after remove_out_of_bounds are the knobs only 5.1's engine reads; their
+// defaults are the book's engine, so a scene that leaves them out runs as in the book.
 struct WorldSettings {
     double width = 800.0;   // px
     double height = 450.0;  // px
@@ -36,6 +49,13 @@ struct WorldSettings {
     bool movement = false;
     bool positional_correction = true;
     bool remove_out_of_bounds = false;
+
+    int substeps = 1;  // each fixed step runs as this many steps of dt / substeps
+    Integrator integrator = Integrator::symplectic;
+    BroadPhase broad_phase = BroadPhase::bounding_circle;
+    FrictionModel friction_model = FrictionModel::book;
+    bool rotation = true;  // false: no angular terms in impulses or motion
+    bool friction = true;  // false: no tangent impulse
 
     friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };
@@ -73,9 +93,14 @@ struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Which world keys a stage reads: chapter 4's engines know only the book's settings,
+// so they refuse the knobs as unknown keys rather than silently ignore them.
+enum class WorldKeys { book, with_knobs };
+
 // Reads and checks `file`. World keys the file leaves out take their value from
 // `defaults`; body keys it leaves out take BodyDescription's defaults. Throws SceneError
 // on the first problem found, so nothing is built from a scene that is only half right.
-SceneDescription load_scene(const std::filesystem::path& file, const WorldSettings& defaults);
+SceneDescription load_scene(const std::filesystem::path& file, const WorldSettings& defaults,
+                            WorldKeys keys = WorldKeys::book);
 
 }  // namespace browser

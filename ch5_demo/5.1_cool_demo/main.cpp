@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
     std::optional<browser::SceneDescription> scene;
     if (const std::string& scene_file = options.extra.at("--scene"); !scene_file.empty()) {
         try {
-            scene = browser::load_scene(scene_file, engine::kBookWorld);
+            scene = browser::load_scene(scene_file, engine::kBookWorld, browser::WorldKeys::with_knobs);
         } catch (const browser::SceneError& error) {
             std::cerr << error.what() << '\n';
             return 2;
