@@ -305,3 +305,97 @@ TEST_CASE("scene_file: the file name appears as it was given") {
     const fs::path detour = folder.path / "." / "scene.json";
     CHECK(refusal(detour).rfind(detour.string() + ": world.dt: ", 0) == 0);
 }
+
+// The knobs of issue 7: only stage 5.1's engine reads them, so only a reader asked for
+// them (WorldKeys::with_knobs) accepts them; chapter 4's stages refuse them like a typo.
+namespace {
+std::string refusal_with_knobs(const fs::path& file) {
+    try {
+        load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs);
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST_CASE("scene_file: the speed/accuracy knobs load with exactly their values") {
+    ScratchFolder folder("knobs");
+    const fs::path file = folder.write("scene.json", R"({"world": {
+        "substeps": 4, "integrator": "explicit", "broad_phase": "grid",
+        "friction_model": "coulomb", "rotation": false, "friction": false}})");
+    const WorldSettings world = load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs).world;
+    CHECK(world.substeps == 4);
+    CHECK(world.integrator == browser::Integrator::explicit_euler);
+    CHECK(world.broad_phase == browser::BroadPhase::grid);
+    CHECK(world.friction_model == browser::FrictionModel::coulomb);
+    CHECK_FALSE(world.rotation);
+    CHECK_FALSE(world.friction);
+    // Everything else is the stage's default.
+    WorldSettings expected = kDemoDefaults;
+    expected.substeps = 4;
+    expected.integrator = browser::Integrator::explicit_euler;
+    expected.broad_phase = browser::BroadPhase::grid;
+    expected.friction_model = browser::FrictionModel::coulomb;
+    expected.rotation = false;
+    expected.friction = false;
+    CHECK(world == expected);
+}
+
+TEST_CASE("scene_file: left out, the knobs are the book's engine") {
+    const WorldSettings book;
+    CHECK(book.substeps == 1);
+    CHECK(book.integrator == browser::Integrator::symplectic);
+    CHECK(book.broad_phase == browser::BroadPhase::bounding_circle);
+    CHECK(book.friction_model == browser::FrictionModel::book);
+    CHECK(book.rotation);
+    CHECK(book.friction);
+    ScratchFolder folder("no_knobs");
+    CHECK(load_scene(folder.write("scene.json", "{}"), kDemoDefaults, browser::WorldKeys::with_knobs).world ==
+          kDemoDefaults);
+}
+
+TEST_CASE("scene_file: every knob value is spelled as the scene format says") {
+    using browser::knob_name;
+    CHECK(knob_name(browser::Integrator::symplectic) == "symplectic");
+    CHECK(knob_name(browser::Integrator::explicit_euler) == "explicit");
+    CHECK(knob_name(browser::BroadPhase::bounding_circle) == "bounding_circle");
+    CHECK(knob_name(browser::BroadPhase::all_pairs) == "all_pairs");
+    CHECK(knob_name(browser::BroadPhase::grid) == "grid");
+    CHECK(knob_name(browser::FrictionModel::book) == "book");
+    CHECK(knob_name(browser::FrictionModel::coulomb) == "coulomb");
+    ScratchFolder folder("spelling");
+    for (const auto phase : {browser::BroadPhase::bounding_circle, browser::BroadPhase::all_pairs,
+                             browser::BroadPhase::grid}) {
+        std::string text = R"({"world": {"broad_phase": ")";
+        const fs::path file = folder.write("scene.json", text.append(knob_name(phase)).append(R"("}})"));
+        CHECK(load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs).world.broad_phase == phase);
+    }
+}
+
+TEST_CASE("scene_file: bad knob values are refused with the choices") {
+    ScratchFolder folder("bad_knobs");
+    const auto world = [&](const std::string& members) {
+        return folder.write("scene.json", R"({"world": {)" + members + "}}");
+    };
+    CHECK(refusal_with_knobs(world(R"("integrator": "verlet")")) ==
+          folder.path.string() + R"(/scene.json: world.integrator: must be "symplectic" or "explicit" (got "verlet"))");
+    CHECK(refusal_with_knobs(world(R"("broad_phase": "quadtree")")) ==
+          folder.path.string() +
+              R"(/scene.json: world.broad_phase: must be "bounding_circle", "all_pairs" or "grid" (got "quadtree"))");
+    CHECK(refusal_with_knobs(world(R"("friction_model": 1)")) ==
+          folder.path.string() + R"(/scene.json: world.friction_model: must be "book" or "coulomb" (got 1))");
+    CHECK(refusal_with_knobs(world(R"("substeps": 0)")) ==
+          folder.path.string() + "/scene.json: world.substeps: must be a whole number in [1, 1000] (got 0)");
+    CHECK(refusal_with_knobs(world(R"("substeps": 2.5)")) ==
+          folder.path.string() + "/scene.json: world.substeps: must be a whole number in [1, 1000] (got 2.5)");
+    CHECK(refusal_with_knobs(world(R"("rotation": "no")")) ==
+          folder.path.string() + R"(/scene.json: world.rotation: must be true or false (got "no"))");
+}
+
+TEST_CASE("scene_file: a chapter 4 stage refuses the knobs it does not read") {
+    ScratchFolder folder("chapter4");
+    const std::string message = refusal(folder.write("scene.json", R"({"world": {"broad_phase": "grid"}})"));
+    CHECK_THAT(message, Catch::StartsWith(folder.path.string() + "/scene.json: world.broad_phase: unknown key;"));
+    CHECK_THAT(message, !Catch::Contains("substeps"));
+}
