@@ -103,10 +103,11 @@ public:
     void runGameLoop();
     // One fixed step of the world: the collision pass, then every shape's motion. With
     // remove_out_of_bounds, a shape whose centre has left the canvas is removed first.
+    // With settings().substeps k > 1 all of that runs k times with dt / k.
     // runGameLoop runs it as often as the timer says; tests may run it directly.
     void update();
-    // How many fixed steps have run, and a function to call after each one (the
-    // state dump of --dump listens here).
+    // How many fixed steps have run (sub-steps not counted), and a function to call
+    // after each one (the state dump of --dump listens here).
     long stepCount() const { return step_count_; }
     void onStep(std::function<void()> listener) { step_listener_ = std::move(listener); }
 

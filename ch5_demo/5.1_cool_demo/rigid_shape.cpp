@@ -57,20 +57,31 @@ bool RigidShape::boundTest(const RigidShape& other) const {
     return center_.distance(other.center_) <= bound_radius_ + other.bound_radius_;
 }
 
-// Symplectic Euler integration (Figure 4-2, right): first the velocity takes the
-// acceleration of the step, v += a dt, then the *new* velocity moves the shape,
-// p += v dt. Explicit Euler would move with the old velocity instead. The angle
-// follows the same two steps with the angular velocity.
+// One step of Newton's second law, by the world's integrator (Figure 4-2). Both take
+// the same new velocity, v += a dt; they differ in which velocity moves the shape.
+// Symplectic Euler (the book's) moves with the *new* one, p += v_new dt; explicit
+// Euler with the one from before, p += v_old dt. Under constant gravity, after n steps
+// of a fall from rest, symplectic Euler has fallen g dt^2 n (n + 1) / 2 and explicit
+// Euler g dt^2 n (n - 1) / 2, either side of the exact g (n dt)^2 / 2. The angle
+// follows the same two steps with the angular velocity, unless the world turns
+// rotation off.
 void RigidShape::update(const browser::WorldSettings& world) {
     if (!world.movement) return;
+    // Gravity does not act on a static body, so one at rest would stay exactly where it
+    // is: skipping it saves the work. One that a user set moving moves on, as in the book.
+    if (isStatic() && velocity_ == Vec2{} && angular_velocity_ == 0.0) return;
     const double dt = world.dt;
+    const bool symplectic = world.integrator == browser::Integrator::symplectic;
     // F = m a with gravity's force m g gives a = g for every mass; a static body has no
     // acceleration at all.
     const Vec2 acceleration = isStatic() ? Vec2{} : world.gravity;
-    velocity_ += acceleration * dt;
-    move(velocity_ * dt);
-    angular_velocity_ += kAngularAcceleration * dt;
-    rotate(angular_velocity_ * dt);
+    const Vec2 new_velocity = velocity_ + acceleration * dt;
+    move((symplectic ? new_velocity : velocity_) * dt);
+    velocity_ = new_velocity;
+    if (!world.rotation) return;
+    const double new_angular_velocity = angular_velocity_ + kAngularAcceleration * dt;
+    rotate((symplectic ? new_angular_velocity : angular_velocity_) * dt);
+    angular_velocity_ = new_angular_velocity;
 }
 
 void RigidShape::updateMass(double delta) {

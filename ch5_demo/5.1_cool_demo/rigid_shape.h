@@ -21,7 +21,9 @@
 // velocity that update() integrates, and the attributes the collision response will
 // use (mass, rotational inertia, friction, restitution).
 
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
@@ -69,7 +71,8 @@ public:
     virtual void move(Vec2 offset) = 0;
     // Turns the shape about its centre by `angle` radians (clockwise on screen).
     virtual void rotate(double angle) = 0;
-    // One fixed step of motion, while the world's movement flag is on.
+    // One step of world.dt (a fixed step, or one sub-step of it) of motion, while the
+    // world's movement flag is on, by the world's integrator.
     void update(const browser::WorldSettings& world);
 
     virtual void draw(browser::Canvas& context) const = 0;
@@ -126,5 +129,8 @@ protected:
     double friction_;
     double restitution_;
 };
+
+// The world's shapes, as the core keeps them.
+using ShapeList = std::span<const std::unique_ptr<RigidShape>>;
 
 }  // namespace engine
