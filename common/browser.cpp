@@ -1,18 +1,16 @@
 #include "browser.h"
 
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
-#include <system_error>
 #include <vector>
 
 #include "contact_sheet.h"
 #include "gif_writer.h"
+#include "output_folder.h"
 #include "png_io.h"
 
 namespace browser {
@@ -29,29 +27,6 @@ std::string frame_picture_name(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
     return name;
-}
-
-// "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
-// the staging folder lands beside it rather than inside it.
-fs::path folder_path(const fs::path& given) {
-    fs::path path = given.lexically_normal();
-    if (!path.has_filename() && path.has_parent_path()) path = path.parent_path();
-    return path;
-}
-
-// Replacing a folder deletes it, so only a folder an earlier run wrote (it holds
-// final.png) or an empty one may go; a mistyped --out must not wipe someone's files.
-void check_replaceable(const fs::path& out) {
-    const std::string name = out.filename().string();
-    if (name.empty() || name == "." || name == "..") {
-        throw FileError("the current folder, its parent or the root cannot be replaced; name a folder inside it");
-    }
-    if (!fs::exists(out)) return;
-    if (!fs::is_directory(out)) throw FileError("it exists and is not a folder");
-    if (!fs::is_empty(out) && !fs::exists(out / kFinalPicture)) {
-        throw FileError("it is a folder that a run did not write (it has no " + std::string(kFinalPicture) +
-                         "), so it is left alone; remove it or choose another --out");
-    }
 }
 
 std::string sheet_label(int frame, bool last) {
@@ -151,27 +126,6 @@ private:
     std::unique_ptr<GifWriter> gif_;
 };
 
-// Moves `staging` to `out`, keeping the old `out` aside until the move has worked.
-void replace_folder(const fs::path& staging, const fs::path& out, const std::string& suffix) {
-    if (!fs::exists(out)) {
-        fs::rename(staging, out);
-        return;
-    }
-    fs::path old = out;
-    old += ".old" + suffix;
-    fs::remove_all(old);
-    fs::rename(out, old);
-    try {
-        fs::rename(staging, out);
-    } catch (...) {
-        std::error_code ignored;
-        fs::rename(old, out, ignored);
-        throw;
-    }
-    std::error_code ignored;  // the pictures are in place; a leftover old folder is only litter
-    fs::remove_all(old, ignored);
-}
-
 }  // namespace
 
 int run(PageScripts& scripts, Window& window, const Options& options) {
@@ -185,28 +139,11 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
     }
     Document& document = window.document;
     Clock& clock = window.clock;
-    const fs::path out = folder_path(options.out_dir);
-    // The process id keeps two runs into the same folder from sharing a staging folder.
-    std::string suffix = "-";
-    suffix += std::to_string(::getpid());
-    fs::path staging = out;
-    staging += ".partial" + suffix;
-
-    bool staging_made = false;
-    const auto discard_staging = [&] {
-        std::error_code ignored;
-        if (staging_made) fs::remove_all(staging, ignored);
-    };
-
+    const fs::path out = OutputFolder::normalized(options.out_dir);
     std::string reason;
     try {
-        check_replaceable(out);
-        if (out.has_parent_path()) fs::create_directories(out.parent_path());
-        fs::remove_all(staging);  // left over from a crashed run that had our process id
-        fs::create_directory(staging);
-        staging_made = true;
-
-        Recorder recorder(options, staging);
+        OutputFolder folder(out, kFinalPicture);
+        Recorder recorder(options, folder.staging());
         for (int k = 0; k < options.frames; ++k) {
             clock.advanceFrame();
             for (const Key key : options.keys.pressesAt(k)) scripts.onKeyDown(key);
@@ -214,20 +151,16 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
             recorder.after_frame(k, document);
         }
         recorder.finish();
-
-        replace_folder(staging, out, suffix);
-        staging_made = false;
+        folder.commit();
         std::cout << recorder.summary(out) << '\n';
         return 0;
     } catch (const FileError& error) {
         reason = error.what();
     } catch (const fs::filesystem_error& error) {
         reason = error.code().message();
-    } catch (...) {
-        discard_staging();  // a page script failed: not ours to report, but no litter either
-        throw;
     }
-    discard_staging();
+    // A failing page script is not ours to report: its exception goes on, and the
+    // output folder's staging folder is gone all the same.
     std::cerr << "cannot write pictures to \"" << out.string() << "\": " << reason << '\n';
     return 1;
 }

@@ -12,18 +12,12 @@
 
 #include "gif_writer.h"
 #include "random.h"
+#include "strict_parse.h"
 
 namespace browser {
 namespace {
 
 constexpr double kMaxFrameMs = 10'000.0;  // ten seconds a frame is already a slide show
-
-// A bad option: the text after "program: " on the one line we print.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-std::string in_quotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
 // The whole of `text` as a T, or nothing. from_chars takes no sign for unsigned types,
 // no '+', no spaces and (here) no trailing characters, so "12abc", " 5" and "-1" for a
@@ -83,15 +77,6 @@ bool gif_possible(bool gif_given, const std::string& program) {
     std::cerr << program << ": note: no animation.gif, as this build has no GIF support"
               << " (install the Debian package libgif-dev and rebuild; --no-gif hides this note)\n";
     return false;
-}
-
-// CLI11's messages are made for its own multi-line report; we print one line.
-std::string one_line(std::string text) {
-    for (char& c : text) {
-        if (c == '\n' || c == '\r') c = ' ';
-    }
-    while (!text.empty() && text.back() == ' ') text.pop_back();
-    return text;
 }
 
 std::string program_name(int argc, const char* const* argv, const StageDefaults& defaults) {
@@ -170,28 +155,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
                 }
             }
         }
-        try {
-            app.parse(arguments);
-        } catch (const CLI::CallForHelp&) {
-            std::cout << app.help();
-            return {std::nullopt, 0};
-        } catch (const CLI::ParseError& error) {
-            throw UsageError(one_line(error.what()));
-        }
-        // CLI11 hands an option the next word even when that word is another option, so
-        // "--out --frames 5" would quietly make a folder named "--frames".
-        for (const CLI::Option* option : app.get_options()) {
-            for (const std::string& value : option->results()) {
-                if (value.starts_with("--")) {
-                    throw UsageError(option->get_name() + ": needs a value before " + in_quotes(value));
-                }
-            }
-        }
-        for (const std::string& word : app.remaining()) {
-            if (word == "--") continue;  // the usual "end of options" mark: harmless
-            throw UsageError((word.starts_with("-") ? "unknown option " : "unexpected argument ") +
-                             in_quotes(word) + " (see --help)");
-        }
+        if (!parse_strictly(app, arguments)) return {std::nullopt, 0};
 
         Options options;
         options.out_dir = out_text;

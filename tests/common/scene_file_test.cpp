@@ -30,9 +30,9 @@ const WorldSettings kDemoDefaults{.gravity = {0.0, 20.0}, .movement = true, .rem
 
 
 // The message load_scene refuses `file` with ("" when it loads).
-std::string refusal(const fs::path& file) {
+std::string refusal(const fs::path& file, browser::WorldKeys keys = browser::WorldKeys::book) {
     try {
-        load_scene(file, kDemoDefaults);
+        load_scene(file, kDemoDefaults, keys);
     } catch (const SceneError& error) {
         return error.what();
     }
@@ -309,14 +309,7 @@ TEST_CASE("scene_file: the file name appears as it was given") {
 // The knobs of issue 7: only stage 5.1's engine reads them, so only a reader asked for
 // them (WorldKeys::with_knobs) accepts them; chapter 4's stages refuse them like a typo.
 namespace {
-std::string refusal_with_knobs(const fs::path& file) {
-    try {
-        load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs);
-    } catch (const SceneError& error) {
-        return error.what();
-    }
-    return "";
-}
+std::string refusal_with_knobs(const fs::path& file) { return refusal(file, browser::WorldKeys::with_knobs); }
 }  // namespace
 
 TEST_CASE("scene_file: the speed/accuracy knobs load with exactly their values") {

@@ -1,0 +1,70 @@
+#pragma once
+// A world the bench can step, time and look at: stage 5.1's engine, or Box2D as the
+// reference (box2d_world.h). The measures only ever see a Snapshot, so one measure
+// serves both engines.
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "collision_oracle.h"
+#include "scene_file.h"
+#include "vec2.h"
+
+namespace bench {
+
+using browser::Vec2;
+
+// One body as the measures see it, in the scene's units (px, s, rad). The outline is
+// the collision oracle's, so overlaps are worked out without the engine's own code.
+struct BodyState {
+    oracle::Shape shape;
+    bool is_static = false;
+    double mass = 0.0;     // 0 for a static body
+    double inertia = 0.0;  // about the centre, mass px^2; 0 for a static body
+    Vec2 velocity;
+    double angular_velocity = 0.0;
+};
+using Snapshot = std::vector<BodyState>;
+
+class BenchWorld {
+public:
+    virtual ~BenchWorld() = default;
+
+    // Runs `steps` fixed steps and adds their wall-clock time to seconds().
+    void run(long steps) {
+        const auto start = std::chrono::steady_clock::now();
+        advance(steps);
+        seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        steps_ += steps;
+    }
+    // Runs `steps` fixed steps that count for nothing: a warm-up, or settling.
+    void run_untimed(long steps) { advance(steps); }
+    long steps() const { return steps_; }
+    double seconds() const { return seconds_; }
+
+    virtual Snapshot snapshot() const = 0;
+
+    // Pairs looked at per fixed step, every relaxation pass counted, on average over
+    // every step run (timed or not): those the broad phase considered (candidates) and
+    // those that reached the exact narrow-phase test. Nothing where the engine does not
+    // say.
+    struct PairCounts {
+        double candidates = 0.0;
+        double narrow_tests = 0.0;
+    };
+    virtual std::optional<PairCounts> pair_counts() const { return std::nullopt; }
+
+protected:
+    virtual void advance(long steps) = 0;
+
+private:
+    long steps_ = 0;
+    double seconds_ = 0.0;
+};
+
+// Stage 5.1's engine with the scene's world and bodies.
+std::unique_ptr<BenchWorld> engine_world(const browser::SceneDescription& scene);
+
+}  // namespace bench

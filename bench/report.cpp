@@ -1,0 +1,122 @@
+#include "report.h"
+
+#include <cstdio>
+#include <functional>
+#include <thread>
+
+#include "box2d_world.h"
+#include "markdown.h"
+
+namespace bench {
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+std::string number(const std::optional<double>& value) { return value ? number(*value) : ""; }
+
+std::string field(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+struct CsvColumn {
+    const char* header;
+    std::function<std::string(const Row&)> value;
+};
+
+// The knobs apply to stage 5.1 only; Box2D's rows keep just the dt they share.
+std::string knob(const Row& row, const std::string& text) { return row.engine == EngineKind::box2d ? "" : text; }
+
+const std::vector<CsvColumn>& columns() {
+    static const std::vector<CsvColumn> list{
+        {"study", [](const Row& r) { return r.study; }},
+        {"scene", [](const Row& r) { return r.scene; }},
+        {"engine", [](const Row& r) { return std::string(r.engine == EngineKind::box2d ? "box2d" : "5.1"); }},
+        {"setting", [](const Row& r) { return r.setting; }},
+        {"varied", [](const Row& r) { return r.varied; }},
+        {"bodies", [](const Row& r) { return std::to_string(r.bodies); }},
+        {"dt", [](const Row& r) { return number(r.world.dt); }},
+        {"substeps", [](const Row& r) { return knob(r, std::to_string(r.world.substeps)); }},
+        {"relaxation_iterations", [](const Row& r) { return knob(r, std::to_string(r.world.relaxation_iterations)); }},
+        {"broad_phase", [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.broad_phase))); }},
+        {"integrator", [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.integrator))); }},
+        {"friction_model",
+         [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.friction_model))); }},
+        {"rotation", [](const Row& r) { return knob(r, r.world.rotation ? "on" : "off"); }},
+        {"friction", [](const Row& r) { return knob(r, r.world.friction ? "on" : "off"); }},
+        {"steps", [](const Row& r) { return std::to_string(r.steps); }},
+        {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
+        {"cost_us", [](const Row& r) { return number(r.cost_us); }},
+        {"steps_per_s", [](const Row& r) { return number(r.steps_per_second()); }},
+        {"ms_per_simulated_s", [](const Row& r) { return number(r.ms_per_simulated_second()); }},
+        {"candidate_pairs", [](const Row& r) { return number(r.candidate_pairs); }},
+        {"narrow_tests", [](const Row& r) { return number(r.narrow_tests); }},
+        {"penetration_max", [](const Row& r) { return number(r.metrics.penetration_max); }},
+        {"penetration_mean", [](const Row& r) { return number(r.metrics.penetration_mean); }},
+        {"top_drift", [](const Row& r) { return number(r.metrics.top_drift); }},
+        {"energy_change", [](const Row& r) { return number(r.metrics.energy_change); }},
+        {"trajectory_error", [](const Row& r) { return number(r.metrics.trajectory_error); }},
+        {"slide_error", [](const Row& r) { return number(r.metrics.slide_error); }},
+        {"roll_error", [](const Row& r) { return number(r.metrics.roll_error); }},
+        {"tunnel_speed", [](const Row& r) { return number(r.metrics.tunnel_speed); }},
+        {"ns_per_pair", [](const Row& r) { return number(r.metrics.ns_per_pair); }},
+    };
+    return list;
+}
+
+}  // namespace
+
+std::string csv_header() {
+    std::string line;
+    for (const CsvColumn& column : columns()) {
+        if (!line.empty()) line += ',';
+        line += column.header;
+    }
+    return line;
+}
+
+std::string results_csv(const std::vector<Row>& rows) {
+    std::string text = csv_header() + "\n";
+    for (const Row& row : rows) {
+        std::string line;
+        for (const CsvColumn& column : columns()) {
+            if (&column != &columns().front()) line += ',';
+            line += field(column.value(row));
+        }
+        text += line + "\n";
+    }
+    return text;
+}
+
+std::string results_markdown(const RunFacts& facts, const std::vector<StudyResult>& studies) {
+    std::string text = "# What the knobs cost and buy: stage 5.1's bench\n\n";
+    text += "Written by `bench`";
+    text += facts.quick ? " **--quick** (short runs and few settings: a smoke test, not figures to quote)" : "";
+    text += " in " + figure(facts.seconds) + " s on " + std::to_string(std::thread::hardware_concurrency()) +
+            " cores; each cost is the median of " + std::to_string(facts.repeats) +
+            (facts.repeats == 1 ? " timed run" : " timed runs") +
+            " per setting, each on a fresh world, errors from the first. Everything runs on one core, one "
+            "setting after another. To keep the whole run within a few minutes, each scene runs only as long "
+            "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "
+            "10,000 steps, and the big scenes try fewer knobs. Costs are wall-clock times on a shared machine: "
+            "compare rows of one run, not runs of different days. Definitions and targets: bench/README.md.\n\n";
+    text += facts.box2d ? "Box2D reference: " + box2d_version() + ", " +
+                              std::to_string(kBox2dVelocityIterations) + " velocity and " +
+                              std::to_string(kBox2dPositionIterations) +
+                              " position iterations, continuous collision off, sleeping off.\n\n"
+                        : std::string(kNoBox2d) + ".\n\n";
+    std::string key;
+    for (const StudyResult& study : studies) {
+        for (const std::string& line : study.key_figures) key += "- " + line + "\n";
+    }
+    if (!key.empty()) text += "## Key figures\n\n" + key + "\n";
+    for (const StudyResult& study : studies) text += study.markdown;
+    return text;
+}
+
+}  // namespace bench

@@ -1,0 +1,92 @@
+#include "runner.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "box2d_world.h"
+
+namespace bench {
+namespace {
+
+using WorldMaker = std::function<std::unique_ptr<BenchWorld>()>;
+
+struct Runs {
+    Metrics metrics;
+    long steps = 0;
+    double cost_us = 0.0;
+    std::optional<double> candidate_pairs;  // per step
+    std::optional<double> narrow_tests;     // per step
+    int repeats = 0;                        // timed runs made
+};
+
+Runs run_repeats(const WorldMaker& make, const browser::WorldSettings& settings, int repeats,
+                 const Measure& measure) {
+    if (repeats < 1) throw std::invalid_argument("run_repeats: repeats must be at least 1");
+    Runs runs;
+    std::vector<double> costs;
+    double timed = 0.0;
+    for (int repeat = 0; repeat < repeats && timed < kRepeatSeconds; ++repeat) {
+        const std::unique_ptr<BenchWorld> world = make();
+        const Metrics metrics = measure(*world, settings);
+        if (world->steps() == 0) throw std::logic_error("run_repeats: the measure ran no step");
+        costs.push_back(world->seconds() * 1e6 / static_cast<double>(world->steps()));
+        timed += world->seconds();
+        if (repeat == 0) {
+            runs.metrics = metrics;
+            runs.steps = world->steps();
+            if (const auto counts = world->pair_counts()) {
+                runs.candidate_pairs = counts->candidates;
+                runs.narrow_tests = counts->narrow_tests;
+            }
+        }
+    }
+    runs.cost_us = median(costs);
+    runs.repeats = static_cast<int>(costs.size());
+    return runs;
+}
+
+Row row_of(const RowSource& source, const Runs& runs) {
+    Row row;
+    row.study = source.study;
+    row.scene = source.scene_name;
+    row.bodies = source.scene.bodies.size();
+    row.steps = runs.steps;
+    row.cost_us = runs.cost_us;
+    row.repeats = runs.repeats;
+    row.candidate_pairs = runs.candidate_pairs;
+    row.narrow_tests = runs.narrow_tests;
+    row.metrics = runs.metrics;
+    return row;
+}
+
+}  // namespace
+
+Row engine_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure) {
+    browser::SceneDescription scene = source.scene;
+    scene.world = setting.world;
+    const Runs runs = run_repeats([&] { return engine_world(scene); }, scene.world, repeats, measure);
+    Row row = row_of(source, runs);
+    row.varied = setting.varied;
+    row.setting = setting.label;
+    row.world = setting.world;
+    return row;
+}
+
+std::optional<Row> box2d_row(const RowSource& source, int repeats, const Measure& measure) {
+    if (!box2d_available()) return std::nullopt;
+    const Runs runs = run_repeats([&] { return box2d_world(source.scene); }, source.scene.world, repeats, measure);
+    Row row = row_of(source, runs);
+    row.engine = EngineKind::box2d;
+    row.setting = box2d_version();
+    row.world = source.scene.world;
+    return row;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) throw std::invalid_argument("median of no values");
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2;
+}
+
+}  // namespace bench

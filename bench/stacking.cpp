@@ -1,0 +1,130 @@
+// Stacking: does a pyramid of boxes stand still? Each relaxation pass removes part of
+// every overlap, but the boxes are pushed into each other anew by gravity every step;
+// the fewer passes, the more overlap is left at the end of a step, and the pyramid
+// slowly sinks into itself and creeps apart. The top box shows the sum of it all.
+
+#include <algorithm>
+#include <cmath>
+
+#include "markdown.h"
+#include "measures.h"
+#include "sweep_study.h"
+
+namespace bench {
+namespace {
+
+constexpr double kSeconds = 10.0;
+constexpr double kQuickSeconds = 0.2;
+// The boxes start 0.25 px apart, so that none overlaps at the start; closing the gaps
+// drops the top by 0.25 px a row, which is not the error. The top's place after a
+// second, when the gaps have closed, is where it should then stay.
+constexpr double kSettleSeconds = 1.0;
+constexpr double kQuickSettleSeconds = 0.1;
+// Motion of less than a pixel does not show on the screen.
+constexpr double kVisiblePx = 1.0;
+
+Measure stacking(double settle, double seconds) {
+    return [settle, seconds](BenchWorld& world, const browser::WorldSettings& settings) {
+        world.run_untimed(steps_for(settle, settings.dt));
+        const Snapshot before = world.snapshot();
+        const std::size_t top = top_body(before);
+        world.run(steps_for(seconds, settings.dt));
+        const Snapshot after = world.snapshot();
+        const Penetration overlap = penetration(after);
+        Metrics metrics;
+        metrics.top_drift = oracle::center(after[top].shape).distance(oracle::center(before[top].shape));
+        metrics.penetration_max = overlap.max;
+        metrics.penetration_mean = overlap.mean;
+        return metrics;
+    };
+}
+
+// The cheapest of all the settings that keep the top within a pixel, if any does.
+const Row* cheapest_steady(const std::vector<Row>& results) {
+    const Row* best = nullptr;
+    for (const Row& row : results) {
+        const bool steady = row.engine == EngineKind::stage_5_1 && row.metrics.top_drift &&
+                            *row.metrics.top_drift < kVisiblePx;
+        if (steady && (!best || row.ms_per_simulated_second() < best->ms_per_simulated_second())) best = &row;
+    }
+    return best;
+}
+
+// The rows that vary the passes (the scene's own 15 among them), fewest passes first.
+std::vector<const Row*> pass_rows(const std::vector<Row>& results) {
+    std::vector<const Row*> rows;
+    for (const Row& row : results) {
+        const bool passes = row.engine == EngineKind::stage_5_1 &&
+                            (row.varied == "relaxation_iterations" || row.varied.empty());
+        if (passes && row.metrics.top_drift) rows.push_back(&row);
+    }
+    std::sort(rows.begin(), rows.end(), [](const Row* a, const Row* b) {
+        return a->world.relaxation_iterations < b->world.relaxation_iterations;
+    });
+    return rows;
+}
+
+std::string passes_give(const Row& row) {
+    const int passes = row.world.relaxation_iterations;
+    return std::to_string(passes) + (passes == 1 ? " pass gives " : " passes give ") +
+           figure(*row.metrics.top_drift) + " px of top motion at " + figure(row.cost_us) + " µs per step";
+}
+
+// What each pass count buys, and the advice: the fewest passes whose top stays within a
+// pixel, and the cheapest setting of all that does.
+void add_advice(int rows, StudyResult& result) {
+    const std::vector<const Row*> by_passes = pass_rows(result.rows);
+    std::string text = "Relaxation passes for " + std::to_string(rows) + " rows: ";
+    const Row* enough = nullptr;
+    for (const Row* row : by_passes) {
+        text += (row == by_passes.front() ? "" : "; ") + passes_give(*row);
+        if (!enough && *row->metrics.top_drift < kVisiblePx) enough = row;
+    }
+    std::string advice = "for " + std::to_string(rows) + " rows, ";
+    if (enough) {
+        advice += passes_give(*enough) + ", the fewest passes that keep the top within " + figure(kVisiblePx) + " px";
+    } else {
+        advice += "no pass count tried keeps the top within " + figure(kVisiblePx) + " px";
+    }
+    if (const Row* best = cheapest_steady(result.rows)) {
+        advice += "; the cheapest setting of all that does is *" + best->setting + "* (" +
+                  figure(*best->metrics.top_drift) + " px, " + figure(best->ms_per_simulated_second()) +
+                  " ms per simulated second)";
+    }
+    result.markdown += text + ".\n\n**Advice:** " + advice + ".\n\n";
+    result.key_figures.push_back("Stacking, " + advice + ".");
+}
+
+}  // namespace
+
+StudyResult stacking_study(const StudyContext& context, int rows) {
+    const double seconds = context.quick ? kQuickSeconds : kSeconds;
+    const double settle = context.quick ? kQuickSettleSeconds : kSettleSeconds;
+    SweepPlan plan;
+    plan.study = "pyramid_" + std::to_string(rows);
+    plan.heading = "Stacking: a pyramid of " + std::to_string(rows) + " rows";
+    plan.question = "A pyramid of " + std::to_string(rows * (rows + 1) / 2) +
+                    " boxes (30 px) standing on a static floor, 0.25 px apart at first, run for " +
+                    figure(settle) + " s to close the gaps and then " + figure(seconds) +
+                    " s more. *Top moved* is how far the top box's centre moved in those " + figure(seconds) +
+                    " s (it should stay put); *overlap* is the deepest and the mean overlap of two "
+                    "shapes at the end, measured by the collision oracle (tests/support/collision_oracle.h), "
+                    "not by the engine.";
+    // The big pyramid costs five times as much a step: all the pass counts, one other
+    // value of each other knob, and no broad phases (the scale study compares those).
+    const Range range = rows <= 10 ? Range::all : Range::one;
+    plan.knobs = {{Knob::relaxation_iterations}, {Knob::dt, range},         {Knob::substeps, range},
+                  {Knob::integrator},            {Knob::friction_model},    {Knob::rotation}};
+    if (rows <= 10) plan.knobs.push_back({Knob::broad_phase});
+    plan.measure = stacking(settle, seconds);
+    plan.box2d = true;
+    plan.error = {"top box moved (px)", [](const Metrics& m) { return m.top_drift; }, 1e-3};
+    plan.columns = {{"top moved (px)", [](const Row& r) { return figure(r.metrics.top_drift); }},
+                    {"overlap max (px)", [](const Row& r) { return figure(r.metrics.penetration_max); }},
+                    {"overlap mean (px)", [](const Row& r) { return figure(r.metrics.penetration_mean); }}};
+    StudyResult result = run_sweep(context, plan);
+    add_advice(rows, result);
+    return result;
+}
+
+}  // namespace bench

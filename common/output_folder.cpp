@@ -1,0 +1,85 @@
+#include "output_folder.h"
+
+#include <unistd.h>
+
+#include <system_error>
+#include <utility>
+
+#include "png_io.h"  // FileError
+
+namespace browser {
+namespace {
+
+namespace fs = std::filesystem;
+
+void check_replaceable(const fs::path& out, const std::string& marker) {
+    const std::string name = out.filename().string();
+    if (name.empty() || name == "." || name == "..") {
+        throw FileError("the current folder, its parent or the root cannot be replaced; name a folder inside it");
+    }
+    if (!fs::exists(out)) return;
+    if (!fs::is_directory(out)) throw FileError("it exists and is not a folder");
+    if (!fs::is_empty(out) && !fs::exists(out / marker)) {
+        throw FileError("it is a folder that a run did not write (it has no " + marker +
+                        "), so it is left alone; remove it or choose another --out");
+    }
+}
+
+// "-<process id>". Built by appending: g++ 12 gives a false -Wrestrict warning
+// for "-" + std::to_string(...).
+std::string process_suffix() {
+    std::string suffix = "-";
+    suffix += std::to_string(::getpid());
+    return suffix;
+}
+
+}  // namespace
+
+// "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
+// the staging folder would land inside it rather than beside it.
+fs::path OutputFolder::normalized(const fs::path& given) {
+    fs::path path = given.lexically_normal();
+    if (!path.has_filename() && path.has_parent_path()) path = path.parent_path();
+    return path;
+}
+
+OutputFolder::OutputFolder(const fs::path& out, std::string marker)
+    : out_(normalized(out)), suffix_(process_suffix()) {
+    check_replaceable(out_, marker);
+    if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
+    fs::path staging = out_;
+    staging += ".partial" + suffix_;
+    fs::remove_all(staging);  // left over from a crashed run that had our process id
+    fs::create_directory(staging);
+    staging_ = std::move(staging);
+}
+
+OutputFolder::~OutputFolder() {
+    if (committed_) return;
+    std::error_code ignored;
+    fs::remove_all(staging_, ignored);
+}
+
+void OutputFolder::commit() {
+    if (!fs::exists(out_)) {
+        fs::rename(staging_, out_);
+        committed_ = true;
+        return;
+    }
+    fs::path old = out_;
+    old += ".old" + suffix_;
+    fs::remove_all(old);
+    fs::rename(out_, old);
+    try {
+        fs::rename(staging_, out_);
+    } catch (...) {
+        std::error_code ignored;
+        fs::rename(old, out_, ignored);
+        throw;
+    }
+    committed_ = true;
+    std::error_code ignored;  // the new files are in place; a leftover old folder is only litter
+    fs::remove_all(old, ignored);
+}
+
+}  // namespace browser
