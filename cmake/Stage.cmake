@@ -39,7 +39,8 @@ function(add_stage id)
   target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
   target_compile_definitions(${id}_tests PRIVATE
     STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
-    SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes")
+    SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes"
+    BENCH_SCENES_DIR="${PROJECT_SOURCE_DIR}/bench/scenes")
 
   add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 
