@@ -7,17 +7,10 @@
 #include "core.h"
 #include "rectangle.h"
 #include "scene_io.h"
+#include "shape_outline.h"
 
 namespace bench {
 namespace {
-
-oracle::Shape outline(const engine::RigidShape& shape) {
-    if (shape.type() == engine::ShapeType::Circle) {
-        return oracle::Disc{shape.center(), static_cast<const engine::Circle&>(shape).radius()};
-    }
-    const auto& box = static_cast<const engine::Rectangle&>(shape);
-    return oracle::Box{box.center(), box.width(), box.height(), box.angle()};
-}
 
 int pixels(double size) { return static_cast<int>(std::ceil(size)); }
 
@@ -35,7 +28,7 @@ public:
         bodies.reserve(core_.objectCount());
         for (std::size_t i = 0; i < core_.objectCount(); ++i) {
             const engine::RigidShape& shape = core_.object(i);
-            bodies.push_back({.shape = outline(shape),
+            bodies.push_back({.shape = test::outline(shape),
                               .is_static = shape.isStatic(),
                               .mass = shape.mass(),
                               .inertia = shape.isStatic() ? 0.0 : 1.0 / shape.invInertia(),

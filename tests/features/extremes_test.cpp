@@ -23,7 +23,7 @@
 #include "book_scene.h"
 #include "circle.h"
 #include "core.h"
-#include "extremes_measures.h"
+#include "world_measures.h"
 #include "rectangle.h"
 #include "world_fixture.h"
 

@@ -26,9 +26,14 @@
 #include "scene_file.h"
 #include "scene_io.h"
 #include "world_fixture.h"
+#include "world_measures.h"
 
 namespace fs = std::filesystem;
 using engine::Vec2;
+using test::depth;
+using test::finite;
+using test::kineticEnergy;
+using test::outline;
 
 namespace {
 
@@ -64,22 +69,6 @@ struct SceneRun {
     test::WorldFixture page;
 };
 
-bool finite(const engine::RigidShape& shape) {
-    return test::finite(shape.center()) && test::finite(shape.velocity()) && std::isfinite(shape.angle()) &&
-           std::isfinite(shape.angularVelocity());
-}
-
-// The shape as the oracle sees it, from its centre, size and angle only.
-oracle::Shape outline(const engine::RigidShape& shape) {
-    if (shape.type() == engine::ShapeType::Rectangle) {
-        const auto& box = static_cast<const engine::Rectangle&>(shape);
-        return oracle::Box{box.center(), box.width(), box.height(), box.angle()};
-    }
-    return oracle::Disc{shape.center(), static_cast<const engine::Circle&>(shape).radius()};
-}
-
-double depth(const engine::RigidShape& a, const engine::RigidShape& b) { return oracle::depth(outline(a), outline(b)); }
-
 // The deepest any moving shape lies in any static one (negative: none touches one).
 struct Deepest {
     double depth = -std::numeric_limits<double>::infinity();
@@ -98,18 +87,6 @@ Deepest deepestInStatic(const engine::Core& core) {
         }
     }
     return deepest;
-}
-
-// Kinetic energy of translation and of spin, (m v^2 + I w^2) / 2, over the moving shapes.
-double kineticEnergy(const engine::Core& core) {
-    double total = 0.0;
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        const engine::RigidShape& shape = core.object(i);
-        if (shape.isStatic()) continue;
-        const double w = shape.angularVelocity();
-        total += shape.mass() * shape.velocity().dot(shape.velocity()) / 2 + w * w / shape.invInertia() / 2;
-    }
-    return total;
 }
 
 std::vector<std::size_t> movingIndices(const engine::Core& core) {

@@ -1,5 +1,5 @@
 #pragma once
-// What the extremes tests measure a world by, worked out from each shape's centre,
+// What tests measure a world by, worked out from each shape's centre,
 // size, angle, mass and velocities only: whether every number is still finite, how deep
 // two shapes overlap (judged by the independent oracle of collision_oracle.h, never by
 // the engine's own collision tests), the kinetic energy, and the centre of mass.
@@ -8,10 +8,8 @@
 #include <cstddef>
 #include <optional>
 
-#include "circle.h"
-#include "collision_oracle.h"
 #include "core.h"
-#include "rectangle.h"
+#include "shape_outline.h"
 #include "world_fixture.h"
 
 namespace test {
@@ -28,20 +26,6 @@ inline std::optional<std::size_t> firstNotFinite(const engine::Core& core) {
         if (!finite(core.object(i))) return i;
     }
     return std::nullopt;
-}
-
-// The shape as the oracle sees it.
-inline oracle::Shape outline(const engine::RigidShape& shape) {
-    if (shape.type() == engine::ShapeType::Rectangle) {
-        const auto& box = static_cast<const engine::Rectangle&>(shape);
-        return oracle::Box{box.center(), box.width(), box.height(), box.angle()};
-    }
-    return oracle::Disc{shape.center(), static_cast<const engine::Circle&>(shape).radius()};
-}
-
-// > 0: they overlap by that much; < 0: apart.
-inline double depth(const engine::RigidShape& a, const engine::RigidShape& b) {
-    return oracle::depth(outline(a), outline(b));
 }
 
 // (m v^2 + I w^2) / 2 over the moving shapes, with I = 1 / invInertia.
