@@ -29,40 +29,6 @@ std::string_view shape_name(ShapeKind shape) {
 }
 
 namespace {
-// Every value of each spelled enum, in declaration order, for reading and for messages.
-constexpr std::array kShapeKinds{ShapeKind::rectangle, ShapeKind::circle};
-constexpr std::array kIntegrators{Integrator::symplectic, Integrator::explicit_euler};
-constexpr std::array kBroadPhases{BroadPhase::bounding_circle, BroadPhase::all_pairs, BroadPhase::grid};
-constexpr std::array kFrictionModels{FrictionModel::book, FrictionModel::coulomb};
-
-const auto& all_values(ShapeKind) { return kShapeKinds; }
-const auto& all_values(Integrator) { return kIntegrators; }
-const auto& all_values(BroadPhase) { return kBroadPhases; }
-const auto& all_values(FrictionModel) { return kFrictionModels; }
-std::string_view spelling(ShapeKind value) { return shape_name(value); }
-std::string_view spelling(Integrator value) { return knob_name(value); }
-std::string_view spelling(BroadPhase value) { return knob_name(value); }
-std::string_view spelling(FrictionModel value) { return knob_name(value); }
-}  // namespace
-
-std::string_view knob_name(Integrator integrator) {
-    return integrator == Integrator::explicit_euler ? "explicit" : "symplectic";
-}
-
-std::string_view knob_name(BroadPhase broad_phase) {
-    switch (broad_phase) {
-        case BroadPhase::all_pairs: return "all_pairs";
-        case BroadPhase::grid: return "grid";
-        case BroadPhase::bounding_circle: break;
-    }
-    return "bounding_circle";
-}
-
-std::string_view knob_name(FrictionModel friction_model) {
-    return friction_model == FrictionModel::coulomb ? "coulomb" : "book";
-}
-
-namespace {
 
 // ---------------------------------------------------------------------------------------
 // Refusals. Helpers deep in the reading throw a Refusal (where + what); load_scene puts
@@ -237,86 +203,36 @@ json parse(const std::string& text) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Values. A Rule is what a number must be, together with the words that say so.
+// Values.
 
-struct Rule {
-    bool (*accepts)(double);
-    const char* words;
-};
+constexpr NumberRule kNotNegative{[](double v) { return std::isfinite(v) && v >= 0.0; },
+                                  "must be a finite number >= 0"};
 
-constexpr Rule kFinite{[](double v) { return std::isfinite(v); }, "must be a finite number"};
-constexpr Rule kPositive{[](double v) { return std::isfinite(v) && v > 0.0; }, "must be a finite number > 0"};
-constexpr Rule kNotNegative{[](double v) { return std::isfinite(v) && v >= 0.0; }, "must be a finite number >= 0"};
-constexpr Rule kFraction{[](double v) { return v >= 0.0 && v <= 1.0; }, "must be a finite number in [0, 1]"};
-// A number of loop passes: whole (15.0 is as good as 15, JSON does not tell them
-// apart), and small enough for an int.
-// Upper bounds keep a run finite: the canvas is a picture in memory (4096 x 4096 px is
-// 64 MiB), one simulated second takes 1/dt steps, and every step runs every pass.
-constexpr Rule kCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
-                      "must be a whole number in [0, 1000]"};
-constexpr Rule kCanvasSize{[](double v) { return v > 0.0 && v <= 4096.0; }, "must be a number in (0, 4096]"};
-constexpr Rule kSubsteps{[](double v) { return v >= 1.0 && v <= 1000.0 && std::floor(v) == v; },
-                         "must be a whole number in [1, 1000]"};
-constexpr Rule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; }, "must be a number in [1e-5, 1]"};
-
-double number(const json& value, const std::string& path, const Rule& rule) {
+double number(const json& value, const std::string& path, const NumberRule& rule) {
     if (!value.is_number() || !rule.accepts(value.get<double>())) refuse_value(path, rule.words, value);
     return value.get<double>();
 }
 
-// One `read` per kind of member, all with the same parameters so that a table of
-// fields can call them alike; a rule means nothing to the kinds that are not numbers.
-void read(const json& value, const std::string& path, const Rule& rule, double& out) {
-    out = number(value, path, rule);
-}
-
-void read(const json& value, const std::string& path, const Rule& rule, int& out) {
-    out = static_cast<int>(number(value, path, rule));
-}
-
-void read(const json& value, const std::string& path, const Rule& rule, Vec2& out) {
+Vec2 vector(const json& value, const std::string& path, const NumberRule& rule) {
     if (!value.is_array() || value.size() != 2) refuse_value(path, "must be an array of two numbers [x, y]", value);
-    out = Vec2{number(value[0], element_path(path, 0), rule), number(value[1], element_path(path, 1), rule)};
+    return Vec2{number(value[0], element_path(path, 0), rule), number(value[1], element_path(path, 1), rule)};
 }
 
-void read(const json& value, const std::string& path, const Rule&, bool& out) {
+bool flag(const json& value, const std::string& path) {
     if (!value.is_boolean()) refuse_value(path, "must be true or false", value);
-    out = value.get<bool>();
+    return value.get<bool>();
 }
 
-// A word from a fixed list: a shape, an integrator, a broad phase, a friction model.
-template <class Spelled>
-    requires std::is_enum_v<Spelled>
-void read(const json& value, const std::string& path, const Rule&, Spelled& out) {
+// A word from a fixed list; its place in the list.
+std::size_t word(const json& value, const std::string& path, std::span<const std::string_view> spellings) {
     std::string choices = "must be ";
-    for (const Spelled choice : all_values(out)) {
-        if (value.is_string() && value.get_ref<const std::string&>() == spelling(choice)) {
-            out = choice;
-            return;
-        }
-        if (choice != all_values(out).front()) choices.append(choice == all_values(out).back() ? " or " : ", ");
-        choices.append("\"").append(spelling(choice)).append("\"");
+    for (std::size_t i = 0; i < spellings.size(); ++i) {
+        if (value.is_string() && value.get_ref<const std::string&>() == spellings[i]) return i;
+        if (i > 0) choices.append(i + 1 == spellings.size() ? " or " : ", ");
+        choices.append("\"").append(spellings[i]).append("\"");
     }
     refuse_value(path, choices, value);
 }
-
-// ---------------------------------------------------------------------------------------
-// Objects, each described by a table of its keys.
-
-constexpr bool kRequired = true;
-
-template <class Owner>
-struct Field {
-    const char* key;
-    std::variant<double Owner::*, int Owner::*, bool Owner::*, Vec2 Owner::*, ShapeKind Owner::*,
-                 Integrator Owner::*, BroadPhase Owner::*, FrictionModel Owner::*>
-        member;
-    Rule rule = kFinite;  // numbers, and both numbers of a vector
-    bool required = false;
-};
-
-template <class Owner>
-using Fields = std::vector<Field<Owner>>;
 
 std::string comma_list(const std::vector<std::string>& words) {
     std::string list;
@@ -335,94 +251,124 @@ void refuse_unknown_keys(const json& object, const std::string& path, const std:
     }
 }
 
-template <class Owner>
-std::vector<std::string> keys_of(const Fields<Owner>& fields, bool only_required) {
-    std::vector<std::string> keys;
-    for (const Field<Owner>& field : fields) {
-        if (field.required || !only_required) keys.emplace_back(field.key);
+void require_object(const json& value, const std::string& path) {
+    if (!value.is_object()) refuse_value(path, "must be an object {...}", value);
+}
+
+// ---------------------------------------------------------------------------------------
+// The world: the keys the stage reads. Each value is checked first and only stored once
+// the whole file has passed, so a refused file leaves every setting as it was.
+
+using Assignment = std::function<void()>;
+
+Assignment read_world_key(const WorldKey& key, const json& value, const std::string& path) {
+    return std::visit(
+        [&](const auto& target) -> Assignment {
+            using Target = std::decay_t<decltype(target)>;
+            if constexpr (std::is_same_v<Target, WorldKey::Number>) {
+                return [setting = target.setting, v = number(value, path, target.rule)] { *setting = v; };
+            } else if constexpr (std::is_same_v<Target, WorldKey::Count>) {
+                return [setting = target.setting, v = number(value, path, target.rule)] {
+                    *setting = static_cast<int>(v);
+                };
+            } else if constexpr (std::is_same_v<Target, WorldKey::Flag>) {
+                return [setting = target.setting, v = flag(value, path)] { *setting = v; };
+            } else if constexpr (std::is_same_v<Target, WorldKey::Vector>) {
+                return [setting = target.setting, v = vector(value, path, target.rule)] { *setting = v; };
+            } else {
+                return [choose = target.choose, i = word(value, path, target.spellings)] { choose(i); };
+            }
+        },
+        key.target());
+}
+
+std::vector<Assignment> read_world(const json& world, std::span<const WorldKey> keys) {
+    const std::string path = "world";
+    require_object(world, path);
+    std::vector<std::string> known;
+    for (const WorldKey& key : keys) known.emplace_back(key.name());
+    refuse_unknown_keys(world, path, known, "this stage's world");
+    std::vector<Assignment> assignments;
+    for (const WorldKey& key : keys) {
+        const auto found = world.find(std::string(key.name()));
+        if (found != world.end()) assignments.push_back(read_world_key(key, *found, member_path(path, found.key())));
     }
-    return keys;
+    return assignments;
 }
 
-// Fills `out` from `object`: members the object leaves out keep the value `out` has.
-// `owner` names the object in messages ("world", "a circle body").
-template <class Owner>
-void read_object(const json& object, const std::string& path, const Fields<Owner>& fields, std::string_view owner,
-                 Owner& out) {
-    if (!object.is_object()) refuse_value(path, "must be an object {...}", object);
-    refuse_unknown_keys(object, path, keys_of(fields, false), owner);
-    for (const Field<Owner>& field : fields) {
-        const std::string field_path = member_path(path, field.key);
-        const auto found = object.find(field.key);
-        if (found != object.end()) {
-            std::visit([&](auto member) { read(*found, field_path, field.rule, out.*member); }, field.member);
-        } else if (field.required) {
-            std::string problem = "missing; ";
-            refuse(field_path, problem.append(owner).append(" needs ").append(comma_list(keys_of(fields, true))));
-        }
-    }
-}
+// ---------------------------------------------------------------------------------------
+// Bodies. A body's keys depend on its shape: a radius on a rectangle is as wrong as a
+// typo. Listed in the order messages show them: what the body is, where, how big, the rest.
 
-const Fields<WorldSettings>& world_fields() {
-    using W = WorldSettings;
-    static const Fields<W> fields{
-        {"width", &W::width, kCanvasSize},
-        {"height", &W::height, kCanvasSize},
-        {"gravity", &W::gravity},
-        {"dt", &W::dt, kTimeStep},
-        {"relaxation_iterations", &W::relaxation_iterations, kCount},
-        {"correction_rate", &W::correction_rate, kFraction},
-        {"movement", &W::movement},
-        {"positional_correction", &W::positional_correction},
-        {"remove_out_of_bounds", &W::remove_out_of_bounds},
-    };
-    return fields;
-}
+struct BodyKey {
+    const char* name;
+    std::variant<double BodyDescription::*, Vec2 BodyDescription::*> member;
+    NumberRule rule = rules::kFinite;
+    bool required = false;
+};
 
-const Fields<WorldSettings>& world_fields_with_knobs() {
-    using W = WorldSettings;
-    static const Fields<W> fields = [] {
-        Fields<W> all = world_fields();
-        all.insert(all.end(), {{"substeps", &W::substeps, kSubsteps},
-                               {"integrator", &W::integrator},
-                               {"broad_phase", &W::broad_phase},
-                               {"friction_model", &W::friction_model},
-                               {"rotation", &W::rotation},
-                               {"friction", &W::friction}});
-        return all;
-    }();
-    return fields;
-}
+constexpr bool kRequired = true;
 
-// A body's keys depend on its shape: a radius on a rectangle is as wrong as a typo.
-// Listed in the order messages show them: what the body is, where, how big, the rest.
-Fields<BodyDescription> body_fields(ShapeKind shape) {
+std::vector<BodyKey> body_keys(ShapeKind shape) {
     using B = BodyDescription;
-    const Fields<B> sizes = shape == ShapeKind::rectangle
-                                ? Fields<B>{{"width", &B::width, kPositive, kRequired},
-                                            {"height", &B::height, kPositive, kRequired}}
-                                : Fields<B>{{"radius", &B::radius, kPositive, kRequired}};
-    Fields<B> fields{{"shape", &B::shape, kFinite, kRequired}, {"center", &B::center, kFinite, kRequired}};
-    fields.insert(fields.end(), sizes.begin(), sizes.end());
-    fields.insert(fields.end(), {{"mass", &B::mass, kNotNegative},
-                                 {"friction", &B::friction, kNotNegative},
-                                 {"restitution", &B::restitution, kFraction},
-                                 {"angle", &B::angle},
-                                 {"velocity", &B::velocity},
-                                 {"angular_velocity", &B::angular_velocity}});
-    return fields;
+    if (shape == ShapeKind::rectangle) {
+        return {{"center", &B::center, rules::kFinite, kRequired},
+                {"width", &B::width, rules::kPositive, kRequired},
+                {"height", &B::height, rules::kPositive, kRequired},
+                {"mass", &B::mass, kNotNegative},
+                {"friction", &B::friction, kNotNegative},
+                {"restitution", &B::restitution, rules::kFraction},
+                {"angle", &B::angle},
+                {"velocity", &B::velocity},
+                {"angular_velocity", &B::angular_velocity}};
+    }
+    return {{"center", &B::center, rules::kFinite, kRequired},
+            {"radius", &B::radius, rules::kPositive, kRequired},
+            {"mass", &B::mass, kNotNegative},
+            {"friction", &B::friction, kNotNegative},
+            {"restitution", &B::restitution, rules::kFraction},
+            {"angle", &B::angle},
+            {"velocity", &B::velocity},
+            {"angular_velocity", &B::angular_velocity}};
 }
 
 BodyDescription read_body(const json& object, const std::string& path) {
-    if (!object.is_object()) refuse_value(path, "must be an object {...}", object);
+    require_object(object, path);
     // The shape decides which keys the body may have, so it is read before the rest.
     const std::string shape_path = member_path(path, "shape");
     const auto shape = object.find("shape");
     if (shape == object.end()) refuse(shape_path, R"(missing; every body needs "shape": "rectangle" or "circle")");
+    constexpr std::array<std::string_view, 2> kShapes{"rectangle", "circle"};
     BodyDescription body;
-    read(*shape, shape_path, kFinite, body.shape);
+    body.shape = word(*shape, shape_path, kShapes) == 0 ? ShapeKind::rectangle : ShapeKind::circle;
+
+    const std::vector<BodyKey> keys = body_keys(body.shape);
+    std::vector<std::string> known{"shape"}, required{"shape"};
+    for (const BodyKey& key : keys) {
+        known.emplace_back(key.name);
+        if (key.required) required.emplace_back(key.name);
+    }
     std::string owner = "a ";
-    read_object(object, path, body_fields(body.shape), owner.append(shape_name(body.shape)).append(" body"), body);
+    owner.append(shape_name(body.shape)).append(" body");
+    refuse_unknown_keys(object, path, known, owner);
+    for (const BodyKey& key : keys) {
+        const std::string key_path = member_path(path, key.name);
+        const auto found = object.find(key.name);
+        if (found == object.end()) {
+            if (!key.required) continue;
+            std::string problem = "missing; ";
+            refuse(key_path, problem.append(owner).append(" needs ").append(comma_list(required)));
+        }
+        std::visit(
+            [&](auto member) {
+                if constexpr (std::is_same_v<decltype(member), Vec2 BodyDescription::*>) {
+                    body.*member = vector(*found, key_path, key.rule);
+                } else {
+                    body.*member = number(*found, key_path, key.rule);
+                }
+            },
+            key.member);
+    }
     return body;
 }
 
@@ -433,23 +379,22 @@ std::vector<BodyDescription> read_bodies(const json& list, const std::string& pa
     return bodies;
 }
 
-SceneDescription read_scene(const json& root, const WorldSettings& defaults, WorldKeys keys) {
-    if (!root.is_object()) refuse_value("", "must be an object {...}", root);
+std::vector<BodyDescription> read_scene(const json& root, std::span<const WorldKey> world_keys) {
+    require_object(root, "");
     refuse_unknown_keys(root, "", {"world", "bodies"}, "a scene");
-    SceneDescription scene{defaults, {}};
-    if (const auto world = root.find("world"); world != root.end()) {
-        read_object(*world, "world", keys == WorldKeys::with_knobs ? world_fields_with_knobs() : world_fields(), "world",
-                    scene.world);
-    }
-    if (const auto bodies = root.find("bodies"); bodies != root.end()) scene.bodies = read_bodies(*bodies, "bodies");
-    return scene;
+    std::vector<Assignment> world;
+    if (const auto found = root.find("world"); found != root.end()) world = read_world(*found, world_keys);
+    std::vector<BodyDescription> bodies;
+    if (const auto found = root.find("bodies"); found != root.end()) bodies = read_bodies(*found, "bodies");
+    for (const Assignment& assign : world) assign();
+    return bodies;
 }
 
 }  // namespace
 
-SceneDescription load_scene(const fs::path& file, const WorldSettings& defaults, WorldKeys keys) {
+std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const WorldKey> world_keys) {
     try {
-        return read_scene(parse(read_text(file)), defaults, keys);
+        return read_scene(parse(read_text(file)), world_keys);
     } catch (const Refusal& refusal) {
         std::string message = file.string();
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);

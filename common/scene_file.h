@@ -1,64 +1,35 @@
 #pragma once
 // Scene files (--scene FILE): a JSON description of the world and its bodies that a
 // learner edits instead of the stage's code. In short:
-//   {"world":  {"width", "height", "gravity": [x, y], "dt", "relaxation_iterations",
-//               "correction_rate", "movement", "positional_correction",
-//               "remove_out_of_bounds", and in stage 5.1 the knobs below},
+//   {"world":  {the keys the stage reads: "gravity": [x, y], "dt", ...},
 //    "bodies": [{"shape": "rectangle", "center": [x, y], "width", "height", ...},
 //               {"shape": "circle", "center": [x, y], "radius", ...}]}
 // where every body may also give mass, friction, restitution, angle, velocity [x, y] and
 // angular_velocity. Everything but a body's shape, center and size may be left out.
 // Units are the book's: px, s, rad, +y down.
 //
-// The reader only checks and describes; it knows nothing of any stage's engine. A stage
-// passes its own book defaults for the world, gets a SceneDescription back, and builds
-// its RigidShapes from it in file order.
+// The browser's part is the reading: JSON, paths, rules, and one format for every
+// problem. The world's settings are the engine's. Each stage from 4.1 on owns its
+// settings and says which world keys it reads (a list of WorldKey, each bound to one of
+// its settings); a key it does not list is refused, so no stage ever silently ignores
+// what a scene asks for. The bodies are the book's RigidShape parameters, the same in
+// every stage that reads scene files.
 
+#include <cmath>
+#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "vec2.h"
 
 namespace browser {
-
-// The knobs that trade speed against accuracy (stage 5.1 only; docs/scene_format.md).
-// Each enum's first value is what the book does.
-enum class Integrator { symplectic, explicit_euler };     // "symplectic", "explicit"
-enum class BroadPhase { bounding_circle, all_pairs, grid };  // "bounding_circle", ...
-enum class FrictionModel { book, coulomb };                // "book", "coulomb"
-
-// The spelling used in scene files, and in the bench's tables.
-std::string_view knob_name(Integrator integrator);
-std::string_view knob_name(BroadPhase broad_phase);
-std::string_view knob_name(FrictionModel friction_model);
-
-// The world's tunables. The member defaults are chapter 4's book values; 5.1 changes
-// gravity to (0, 20) and turns on movement and remove_out_of_bounds:
-//   WorldSettings{.gravity = {0, 20}, .movement = true, .remove_out_of_bounds = true}
-// The members after remove_out_of_bounds are the knobs only 5.1's engine reads; their
-// defaults are the book's engine, so a scene that leaves them out runs as in the book.
-struct WorldSettings {
-    double width = 800.0;   // px
-    double height = 450.0;  // px
-    Vec2 gravity{0.0, 10.0};  // px/s^2, +y down
-    double dt = 1.0 / 60.0;   // s per fixed update
-    int relaxation_iterations = 15;
-    double correction_rate = 0.8;  // share of the overlap positional correction removes
-    bool movement = false;
-    bool positional_correction = true;
-    bool remove_out_of_bounds = false;
-
-    int substeps = 1;  // each fixed step runs as this many steps of dt / substeps
-    Integrator integrator = Integrator::symplectic;
-    BroadPhase broad_phase = BroadPhase::bounding_circle;
-    FrictionModel friction_model = FrictionModel::book;
-    bool rotation = true;  // false: no angular terms in impulses or motion
-    bool friction = true;  // false: no tangent impulse
-
-    friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
-};
 
 enum class ShapeKind { rectangle, circle };
 
@@ -81,9 +52,74 @@ struct BodyDescription {
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
 };
 
-struct SceneDescription {
-    WorldSettings world;
-    std::vector<BodyDescription> bodies;  // in file order: the object index keys 0-9 select
+// What a number in a scene file must be, and the words that say so in a refusal.
+struct NumberRule {
+    bool (*accepts)(double);
+    const char* words;
+};
+
+// The rules the book's settings need; a stage may write its own for its own keys.
+namespace rules {
+inline constexpr NumberRule kFinite{[](double v) { return std::isfinite(v); }, "must be a finite number"};
+inline constexpr NumberRule kPositive{[](double v) { return std::isfinite(v) && v > 0.0; },
+                                      "must be a finite number > 0"};
+inline constexpr NumberRule kFraction{[](double v) { return v >= 0.0 && v <= 1.0; },
+                                      "must be a finite number in [0, 1]"};
+// The canvas is a picture in memory: 4096 x 4096 px is 64 MiB.
+inline constexpr NumberRule kCanvasSize{[](double v) { return v > 0.0 && v <= 4096.0; },
+                                        "must be a number in (0, 4096]"};
+// One simulated second takes 1/dt steps; below 1e-5 s a short run never ends.
+inline constexpr NumberRule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; },
+                                      "must be a number in [1e-5, 1]"};
+// A number of loop passes: whole (JSON does not tell 15.0 from 15), and small enough
+// that every step still ends soon.
+inline constexpr NumberRule kPassCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
+                                       "must be a whole number in [0, 1000]"};
+}  // namespace rules
+
+// One key of the "world" object that a stage reads, bound to the setting it fills:
+//   WorldKey{"dt", settings.dt, rules::kTimeStep}
+//   WorldKey{"movement", settings.movement}
+//   WorldKey{"integrator", settings.integrator, {{"symplectic", Integrator::symplectic}, ...}}
+// A key the file leaves out leaves its setting as it was: the stage's book default.
+class WorldKey {
+public:
+    WorldKey(std::string_view name, double& setting, NumberRule rule = rules::kFinite)
+        : name_(name), target_(Number{&setting, rule}) {}
+    // A whole number; `rule` must accept only values an int holds.
+    WorldKey(std::string_view name, int& setting, NumberRule rule)
+        : name_(name), target_(Count{&setting, rule}) {}
+    WorldKey(std::string_view name, bool& setting) : name_(name), target_(Flag{&setting}) {}
+    WorldKey(std::string_view name, Vec2& setting, NumberRule rule = rules::kFinite)
+        : name_(name), target_(Vector{&setting, rule}) {}
+    // One word from a fixed list, each naming a value of the setting's enum.
+    template <class Enum>
+        requires std::is_enum_v<Enum>
+    WorldKey(std::string_view name, Enum& setting, std::vector<std::pair<std::string_view, Enum>> words)
+        : name_(name), target_(Word{spellings(words), [&setting, words](std::size_t i) { setting = words[i].second; }}) {}
+
+    struct Number { double* setting; NumberRule rule; };
+    struct Count { int* setting; NumberRule rule; };
+    struct Flag { bool* setting; };
+    struct Vector { Vec2* setting; NumberRule rule; };
+    struct Word {
+        std::vector<std::string_view> spellings;
+        std::function<void(std::size_t)> choose;  // sets the setting to the i-th word's value
+    };
+
+    std::string_view name() const { return name_; }
+    const std::variant<Number, Count, Flag, Vector, Word>& target() const { return target_; }
+
+private:
+    template <class Enum>
+    static std::vector<std::string_view> spellings(const std::vector<std::pair<std::string_view, Enum>>& words) {
+        std::vector<std::string_view> names;
+        for (const auto& word : words) names.push_back(word.first);
+        return names;
+    }
+
+    std::string_view name_;
+    std::variant<Number, Count, Flag, Vector, Word> target_;
 };
 
 // A scene that cannot be simulated. what() is one line:
@@ -93,14 +129,10 @@ struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Which world keys a stage reads: chapter 4's engines know only the book's settings,
-// so they refuse the knobs as unknown keys rather than silently ignore them.
-enum class WorldKeys { book, with_knobs };
-
-// Reads and checks `file`. World keys the file leaves out take their value from
-// `defaults`; body keys it leaves out take BodyDescription's defaults. Throws SceneError
-// on the first problem found, so nothing is built from a scene that is only half right.
-SceneDescription load_scene(const std::filesystem::path& file, const WorldSettings& defaults,
-                            WorldKeys keys = WorldKeys::book);
+// Reads and checks `file`: its world keys go into the settings `world_keys` are bound
+// to, and its bodies come back in file order (the object index the keys 0-9 select).
+// Throws SceneError on the first problem found, before any setting is changed, so
+// nothing is built from a scene that is only half right.
+std::vector<BodyDescription> load_scene(const std::filesystem::path& file, std::span<const WorldKey> world_keys);
 
 }  // namespace browser

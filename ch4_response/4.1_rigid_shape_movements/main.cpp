@@ -75,16 +75,16 @@ int main(int argc, char** argv) {
     browser::Options options = *command_line.options;
 
     // A scene that cannot be simulated stops the program before anything is written.
-    std::optional<browser::SceneDescription> scene;
+    std::optional<engine::Scene> scene;
     if (const std::string& scene_file = options.extra.at("--scene"); !scene_file.empty()) {
         try {
-            scene = browser::load_scene(scene_file, engine::kBookWorld);
+            scene = engine::loadScene(scene_file);
         } catch (const browser::SceneError& error) {
             std::cerr << error.what() << '\n';
             return 2;
         }
     }
-    const browser::WorldSettings settings = scene ? scene->world : engine::kBookWorld;
+    const engine::WorldSettings settings = scene ? scene->world : engine::kBookWorld;
     // The default key script was written for the book's scene; a scene file runs
     // untouched unless --keys says otherwise.
     if (scene && !options.keys_given) options.keys = browser::KeyScript();

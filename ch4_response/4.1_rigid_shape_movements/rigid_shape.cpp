@@ -28,7 +28,7 @@ bool RigidShape::boundTest(const RigidShape& other) const {
 // acceleration of the step, v += a dt, then the *new* velocity moves the shape,
 // p += v dt. Explicit Euler would move with the old velocity instead. The angle
 // follows the same two steps with the angular velocity.
-void RigidShape::update(const browser::WorldSettings& world) {
+void RigidShape::update(const WorldSettings& world) {
     if (!world.movement) return;
     const double dt = world.dt;
     // F = m a with gravity's force m g gives a = g for every mass; a static body has no

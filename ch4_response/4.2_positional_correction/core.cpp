@@ -35,7 +35,7 @@ int FixedStepTimer::updatesDue(double now_ms) {
     return updates;
 }
 
-Core::Core(browser::Window& window, const browser::WorldSettings& settings)
+Core::Core(browser::Window& window, const WorldSettings& settings)
     : window_(window), settings_(settings), timer_(window.clock.nowMs(), settings.dt * kMsPerSecond) {}
 
 double Core::width() const { return window_.document.canvas.width(); }

@@ -25,7 +25,7 @@
 
 #include "canvas.h"
 #include "collision_info.h"
-#include "scene_file.h"
+#include "world_settings.h"
 #include "vec2.h"
 
 namespace engine {
@@ -61,7 +61,7 @@ public:
     // Turns the shape about its centre by `angle` radians (clockwise on screen).
     virtual void rotate(double angle) = 0;
     // One fixed step of motion, while the world's movement flag is on.
-    void update(const browser::WorldSettings& world);
+    void update(const WorldSettings& world);
 
     virtual void draw(browser::Canvas& context) const = 0;
 

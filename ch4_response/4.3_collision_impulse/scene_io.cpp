@@ -20,6 +20,26 @@ browser::ShapeKind kindOf(const RigidShape& shape) {
 
 }  // namespace
 
+std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
+    namespace rules = browser::rules;
+    return {
+        {"width", world.width, rules::kCanvasSize},
+        {"height", world.height, rules::kCanvasSize},
+        {"gravity", world.gravity},
+        {"dt", world.dt, rules::kTimeStep},
+        {"movement", world.movement},
+        {"relaxation_iterations", world.relaxation_iterations, rules::kPassCount},
+        {"correction_rate", world.correction_rate, rules::kFraction},
+        {"positional_correction", world.positional_correction},
+    };
+}
+
+Scene loadScene(const std::filesystem::path& file) {
+    Scene scene;
+    scene.bodies = browser::load_scene(file, worldKeys(scene.world));
+    return scene;
+}
+
 void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies) {
     for (const browser::BodyDescription& body : bodies) {
         RigidShape& shape = addBody(core, body);

@@ -14,28 +14,9 @@
 #include "browser.h"
 #include "physics.h"
 #include "rigid_shape.h"
-#include "scene_file.h"
+#include "world_settings.h"
 
 namespace engine {
-
-// The book's world advances in fixed steps of 1/60 s, whatever the frame rate (a scene
-// file may choose another step, the settings' dt).
-inline constexpr double kFPS = 60.0;
-inline constexpr double kFrameTime = 1.0 / kFPS;   // seconds per update
-inline constexpr double kMPF = 1000.0 / kFPS;      // milliseconds per update
-
-// Gravity pulls every body down, and +y is down on the canvas.
-inline constexpr Vec2 kGravity{0.0, 10.0};  // px/s^2
-
-// The world the book's chapter 4 simulates: these settings unless a scene file gives
-// others. Movement starts off; the comma key turns it on. Positional correction starts
-// on; the M key turns it off.
-inline constexpr browser::WorldSettings kBookWorld{.gravity = kGravity,
-                                                   .dt = kFrameTime,
-                                                   .relaxation_iterations = kRelaxationCount,
-                                                   .correction_rate = kPosCorrectionRate,
-                                                   .movement = false,
-                                                   .positional_correction = true};
 
 // The timing half of the engine loop. Frames come when the browser is ready to draw,
 // and their length varies; the world must still move in equal steps so it behaves the
@@ -61,7 +42,7 @@ class Core {
 public:
     // The settings' dt is both the step of the integration and the fixed step of the
     // loop, as the book derives both from one constant.
-    explicit Core(browser::Window& window, const browser::WorldSettings& settings = kBookWorld);
+    explicit Core(browser::Window& window, const WorldSettings& settings = kBookWorld);
 
     double width() const;   // 800 px, the book's mWidth
     double height() const;  // 450 px, the book's mHeight
@@ -90,7 +71,7 @@ public:
     // mUpdateIntervalInSeconds; and in gEngine.Physics: mRelaxationCount,
     // mPosCorrectionRate, mPositionalCorrectionFlag): one value, read by the physics
     // and by every shape.
-    const browser::WorldSettings& settings() const { return settings_; }
+    const WorldSettings& settings() const { return settings_; }
     // The comma key: starts and stops every shape's motion.
     void toggleMovement() { settings_.movement = !settings_.movement; }
     // The M key: turns positional correction on and off.
@@ -114,7 +95,7 @@ private:
     void draw();
 
     browser::Window& window_;
-    browser::WorldSettings settings_;
+    WorldSettings settings_;
     std::vector<std::unique_ptr<RigidShape>> all_objects_;  // the book's mAllObjects
     std::size_t selected_ = 0;
     FixedStepTimer timer_;

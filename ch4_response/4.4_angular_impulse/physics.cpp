@@ -66,7 +66,7 @@ void applyImpulse(RigidShape& a, RigidShape& b, const LeverArms& arms, Vec2 impu
 // would stop the slide by (1 + e) mu and caps it at jN (not Coulomb's |jT| <= mu jN;
 // see docs/errata.md).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const browser::WorldSettings& world) {
+                      const WorldSettings& world) {
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
 
     const Vec2 normal = info.normal();  // from a to b
@@ -104,14 +104,14 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
     return info;
 }
 
-void Physics::collision(ShapeList shapes, const browser::WorldSettings& world) {
+void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
 }
 
 // Every pair is resolved as soon as it is found, so the pairs after it already see the
 // shapes where that correction left them.
-void Physics::relaxationPass(ShapeList shapes, const browser::WorldSettings& world) {
+void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         for (std::size_t j = i + 1; j < shapes.size(); ++j) {

@@ -36,14 +36,9 @@
 #include "canvas.h"
 #include "collision_info.h"
 #include "rigid_shape.h"
-#include "scene_file.h"
+#include "world_settings.h"
 
 namespace engine {
-
-// The book's relaxation: 15 passes per step, each removing 80% of every overlap it
-// finds, so an overlap left alone shrinks to 0.2^15 (3e-11) of its depth in one step.
-inline constexpr int kRelaxationCount = 15;
-inline constexpr double kPosCorrectionRate = 0.8;
 
 // The world's shapes, as the core keeps them.
 using ShapeList = std::span<const std::unique_ptr<RigidShape>>;
@@ -63,7 +58,7 @@ class Physics {
 public:
     // world.relaxation_iterations passes, each testing every pair of shapes once and
     // resolving each pair that collides; pairs of two static shapes are left out.
-    void collision(ShapeList shapes, const browser::WorldSettings& world);
+    void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
 
     // Draws the collision info of every pair the last pass found: an orange line
@@ -71,7 +66,7 @@ public:
     void drawCollisions(browser::Canvas& context) const;
 
 private:
-    void relaxationPass(ShapeList shapes, const browser::WorldSettings& world);
+    void relaxationPass(ShapeList shapes, const WorldSettings& world);
 
     std::vector<Collision> collisions_;
 };

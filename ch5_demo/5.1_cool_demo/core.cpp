@@ -35,7 +35,7 @@ int FixedStepTimer::updatesDue(double now_ms) {
     return updates;
 }
 
-Core::Core(browser::Window& window, const browser::WorldSettings& settings)
+Core::Core(browser::Window& window, const WorldSettings& settings)
     : window_(window), settings_(settings), timer_(window.clock.nowMs(), settings.dt * kMsPerSecond) {}
 
 double Core::width() const { return window_.document.canvas.width(); }
@@ -56,18 +56,11 @@ void Core::runGameLoop() {
     draw();
 }
 
-// One fixed step: find the collisions first, then let every shape take its step. With
-// substeps k, that is done k times with dt / k: the world is the same, only the steps
-// are shorter, so shapes overlap less before they are found and a fast one moves less
-// between two looks. The loop's timer still counts whole steps of dt.
+// One fixed step: find the collisions first, then let every shape take its step.
 void Core::update() {
-    browser::WorldSettings sub_step = settings_;
-    sub_step.dt = settings_.dt / settings_.substeps;
-    for (int k = 0; k < settings_.substeps; ++k) {
-        physics_.collision(all_objects_, sub_step);
-        if (settings_.remove_out_of_bounds) removeOutOfBounds();
-        for (const auto& shape : all_objects_) shape->update(sub_step);
-    }
+    physics_.collision(all_objects_, settings_);
+    for (const auto& shape : all_objects_) shape->update(settings_);
+    if (settings_.remove_out_of_bounds) removeOutOfBounds();
     ++step_count_;
     if (step_listener_) step_listener_();
 }
@@ -77,9 +70,11 @@ bool Core::isOutOfBounds(const RigidShape& shape) const {
     return c.x < 0 || c.x > width() || c.y < 0 || c.y > height();
 }
 
-// The book removes a shape from inside the update loop, while the loop walks the list,
-// so the shape after it misses its update in that step (docs/errata.md). Removing
-// first, then updating every shape left, keeps everyone's step.
+// The book removes a shape from inside its own update, while the core's loop walks the
+// list, so the shape after it slides into its place and misses its step. Removing once
+// every shape has taken its step removes the same shapes in the same step, and skips
+// no one (docs/errata.md). The selection is an index, as the book's gObjectNum is; one
+// past the end of the list goes back to object 0.
 void Core::removeOutOfBounds() {
     std::erase_if(all_objects_, [this](const auto& shape) { return isOutOfBounds(*shape); });
     if (selected_ >= all_objects_.size()) selected_ = 0;

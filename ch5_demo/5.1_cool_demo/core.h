@@ -14,31 +14,9 @@
 #include "browser.h"
 #include "physics.h"
 #include "rigid_shape.h"
-#include "scene_file.h"
+#include "world_settings.h"
 
 namespace engine {
-
-// The book's world advances in fixed steps of 1/60 s, whatever the frame rate (a scene
-// file may choose another step, the settings' dt).
-inline constexpr double kFPS = 60.0;
-inline constexpr double kFrameTime = 1.0 / kFPS;   // seconds per update
-inline constexpr double kMPF = 1000.0 / kFPS;      // milliseconds per update
-
-// Gravity pulls every body down, and +y is down on the canvas. The demo pulls twice as
-// hard as chapter 4, so the shapes tumble briskly.
-inline constexpr Vec2 kGravity{0.0, 20.0};  // px/s^2
-
-// The world of the book's cool demo: these settings unless a scene file gives others.
-// Movement starts on (the comma key stops it). With no borders around the canvas, a
-// shape that falls off would be simulated for ever, unseen; so a shape whose centre
-// leaves the canvas is removed.
-inline constexpr browser::WorldSettings kBookWorld{.gravity = kGravity,
-                                                   .dt = kFrameTime,
-                                                   .relaxation_iterations = kRelaxationCount,
-                                                   .correction_rate = kPosCorrectionRate,
-                                                   .movement = true,
-                                                   .positional_correction = true,
-                                                   .remove_out_of_bounds = true};
 
 // The timing half of the engine loop. Frames come when the browser is ready to draw,
 // and their length varies; the world must still move in equal steps so it behaves the
@@ -64,7 +42,7 @@ class Core {
 public:
     // The settings' dt is both the step of the integration and the fixed step of the
     // loop, as the book derives both from one constant.
-    explicit Core(browser::Window& window, const browser::WorldSettings& settings = kBookWorld);
+    explicit Core(browser::Window& window, const WorldSettings& settings = kBookWorld);
 
     double width() const;   // 800 px, the book's mWidth
     double height() const;  // 450 px, the book's mHeight
@@ -93,7 +71,7 @@ public:
     // mUpdateIntervalInSeconds; and in gEngine.Physics: mRelaxationCount,
     // mPosCorrectionRate, mPositionalCorrectionFlag): one value, read by the physics
     // and by every shape.
-    const browser::WorldSettings& settings() const { return settings_; }
+    const WorldSettings& settings() const { return settings_; }
     // The comma key: starts and stops every shape's motion.
     void toggleMovement() { settings_.movement = !settings_.movement; }
     // The M key: turns positional correction on and off.
@@ -101,13 +79,13 @@ public:
 
     // One animation frame: every update that is due, then the echo and one drawing.
     void runGameLoop();
-    // One fixed step of the world: the collision pass, then every shape's motion. With
-    // remove_out_of_bounds, a shape whose centre has left the canvas is removed first.
-    // With settings().substeps k > 1 all of that runs k times with dt / k.
+    // One fixed step of the world: the collision pass, then every shape's motion; with
+    // remove_out_of_bounds, every shape whose centre has left the canvas in this step
+    // is then removed.
     // runGameLoop runs it as often as the timer says; tests may run it directly.
     void update();
-    // How many fixed steps have run (sub-steps not counted), and a function to call
-    // after each one (the state dump of --dump listens here).
+    // How many fixed steps have run, and a function to call after each one (the
+    // state dump of --dump listens here).
     long stepCount() const { return step_count_; }
     void onStep(std::function<void()> listener) { step_listener_ = std::move(listener); }
 
@@ -121,7 +99,7 @@ private:
     void draw();
 
     browser::Window& window_;
-    browser::WorldSettings settings_;
+    WorldSettings settings_;
     std::vector<std::unique_ptr<RigidShape>> all_objects_;  // the book's mAllObjects
     std::size_t selected_ = 0;
     FixedStepTimer timer_;

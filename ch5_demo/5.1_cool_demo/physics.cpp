@@ -1,7 +1,6 @@
 #include "physics.h"
 
 #include <algorithm>
-#include <span>
 
 namespace engine {
 
@@ -59,31 +58,19 @@ void applyImpulse(RigidShape& a, RigidShape& b, const LeverArms& arms, Vec2 impu
     b.setAngularVelocity(b.angularVelocity() + arms.b.cross(impulse) * b.invInertia());
 }
 
-// The tangent impulse that friction applies. `sliding` is the contact's speed along the
-// tangent, which points against the slide (so sliding <= 0), and -sliding / response
-// is the impulse that would stop the slide. The book's "simplistic" model scales that
-// by (1 + e) mu and caps it at jN; Coulomb's law takes it as it is, but never more than
-// mu jN: a contact pressed together by jN can hold at most mu jN sideways.
-double frictionImpulse(double sliding, double response, double jN, double restitution, double friction,
-                       browser::FrictionModel model) {
-    if (model == browser::FrictionModel::coulomb) return std::min(-sliding / response, friction * jN);
-    const double jT = -(1 + restitution) * sliding * friction / response;
-    return std::min(jT, jN);  // friction never pushes harder than the collision itself
-}
-
 // What a collision does to the pair: push them apart, then change their velocities by
 // the impulse method, with rotation (Equations 4 to 6). Along the normal, the impulse
 // jN makes the contact points separate at e times the speed they met with (Newton's
 // law of restitution at the contact, Equation 4). Along the tangent, friction takes
-// away part of the sliding (see frictionImpulse; docs/errata.md, "Friction").
+// away part of the sliding; the book's "simplistic" model scales the impulse that
+// would stop the slide by (1 + e) mu and caps it at jN (not Coulomb's |jT| <= mu jN;
+// see docs/errata.md).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const browser::WorldSettings& world) {
+                      const WorldSettings& world) {
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
 
     const Vec2 normal = info.normal();  // from a to b
-    // Without rotation the impulses act as if through the centres: zero lever arms drop
-    // every angular term (w x r, (r x d)^2 / I, r x j) and leave the rest as it is.
-    const LeverArms arms = world.rotation ? leverArms(a, b, info) : LeverArms{};
+    const LeverArms arms = leverArms(a, b, info);
     const Vec2 relative_velocity = velocityAt(b, arms.b) - velocityAt(a, arms.a);
     const double normal_speed = relative_velocity.dot(normal);
     // Moving apart already: the velocities need no help. (The positions above were
@@ -97,26 +84,19 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
     // Equation 5: after the impulse the contact's normal speed is -e times what it was.
     const double jN = -(1 + restitution) * normal_speed / impulseResponse(a, b, arms, normal);
     applyImpulse(a, b, arms, normal * jN);
-    if (!world.friction) return;
 
-    // Equation 6. The book takes the tangent, and the sliding, from the velocity before
-    // the normal impulse. But that impulse has turned the shapes, and so changed the
-    // sliding: stopping a slide that is no longer there can speed the contact up and
-    // create energy (docs/errata.md, "Friction from the velocity before the bounce").
-    // The Coulomb model measures the sliding after the normal impulse, as it is when
-    // friction acts; an impulse that at most stops it can only take energy away.
-    const Vec2 sliding_velocity = world.friction_model == browser::FrictionModel::coulomb
-                                      ? velocityAt(b, arms.b) - velocityAt(a, arms.a)
-                                      : relative_velocity;
-    const Vec2 tangent = (sliding_velocity - normal * sliding_velocity.dot(normal)).normalize() * -1;
-    const double jT = frictionImpulse(sliding_velocity.dot(tangent), impulseResponse(a, b, arms, tangent), jN,
-                                      restitution, friction, world.friction_model);
+    // Equation 6. The tangent points against the sliding, from the velocity before the
+    // normal impulse (which has changed the spin, and so the sliding, since).
+    const Vec2 tangent = (relative_velocity - normal * normal_speed).normalize() * -1;
+    double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / impulseResponse(a, b, arms, tangent);
+    jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, arms, tangent * jT);
 }
 
 }  // namespace
 
-std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& b) {
+std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b) {
+    if (!a.boundTest(b)) return std::nullopt;
     std::optional<CollisionInfo> info = a.collisionTest(b);
     // A normal with a negative component along the line between the centres points
     // from b towards a.
@@ -124,63 +104,27 @@ std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& 
     return info;
 }
 
-std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b) {
-    if (!a.boundTest(b)) return std::nullopt;
-    return narrowPhase(a, b);
-}
-
-void Physics::collision(ShapeList shapes, const browser::WorldSettings& world) {
+void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
-    candidate_pairs_ = 0;
-    narrow_phase_tests_ = 0;
-    if (world.broad_phase == browser::BroadPhase::grid) grid_.build(shapes);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
 }
 
 // Every pair is resolved as soon as it is found, so the pairs after it already see the
-// shapes where that correction left them. Pairs are met in the same order whatever the
-// broad phase: row by row, (i, j) for every j > i in turn.
-void Physics::relaxationPass(ShapeList shapes, const browser::WorldSettings& world) {
+// shapes where that correction left them.
+void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     for (std::size_t i = 0; i < shapes.size(); ++i) {
-        if (world.broad_phase == browser::BroadPhase::grid) {
-            gridRow(shapes, i, world);
-        } else {
-            for (std::size_t j = i + 1; j < shapes.size(); ++j) testAndResolve(shapes, i, j, world);
+        for (std::size_t j = i + 1; j < shapes.size(); ++j) {
+            RigidShape& a = *shapes[i];
+            RigidShape& b = *shapes[j];
+            // Nothing moves two static shapes, so they are not even tested.
+            if (a.isStatic() && b.isStatic()) continue;
+            const std::optional<CollisionInfo> info = findCollision(a, b);
+            if (!info) continue;
+            collisions_.push_back({i, j, *info});
+            resolveCollision(a, b, *info, world);
         }
     }
-}
-
-// Row i with the grid: only the j that share a cell with shape i, in the same order.
-// A resolved pair has moved both shapes, so the grid files them anew; if shape i now
-// covers other cells, the rest of its row is gathered again (spatial_grid.h, fact 3).
-void Physics::gridRow(ShapeList shapes, std::size_t i, const browser::WorldSettings& world) {
-    std::span<const std::size_t> row = grid_.candidates(i, i);
-    std::size_t next = 0;
-    while (next < row.size()) {
-        const std::size_t j = row[next++];
-        if (!testAndResolve(shapes, i, j, world)) continue;
-        grid_.update(j);
-        if (grid_.update(i)) {
-            row = grid_.candidates(i, j);
-            next = 0;
-        }
-    }
-}
-
-bool Physics::testAndResolve(ShapeList shapes, std::size_t i, std::size_t j, const browser::WorldSettings& world) {
-    RigidShape& a = *shapes[i];
-    RigidShape& b = *shapes[j];
-    // Nothing moves two static shapes, so they are not even tested.
-    if (a.isStatic() && b.isStatic()) return false;
-    ++candidate_pairs_;
-    if (world.broad_phase != browser::BroadPhase::all_pairs && !a.boundTest(b)) return false;
-    ++narrow_phase_tests_;
-    const std::optional<CollisionInfo> info = narrowPhase(a, b);
-    if (!info) return false;
-    collisions_.push_back({i, j, *info});
-    resolveCollision(a, b, *info, world);
-    return true;
 }
 
 void Physics::drawCollisions(browser::Canvas& context) const {

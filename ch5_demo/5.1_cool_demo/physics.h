@@ -23,38 +23,25 @@
 // turns it, so the impulses act at the contact point, on the velocities of the two
 // shapes there, and change their angular velocities too.
 //
-// The world's knobs (scene_file.h) trade speed against accuracy; their defaults are the
-// book. broad_phase picks which pairs reach the narrow phase: "bounding_circle" (the
-// book) tests every pair's bounding circles first; "all_pairs" skips that test and
-// sends every pair to the narrow phase; "grid" (spatial_grid.h) tests only pairs
-// that share a cell of a grid. All three find the same pairs, in the same order, so
-// the world moves bit for bit the same; only the time differs. (all_pairs can part
-// from the others where a narrow test finds two shapes touching, to the last digit,
-// that the bounding circles put a last digit apart: corners meeting a circle or
-// another corner exactly on the line of a diagonal.) friction_model picks the
-// tangent impulse (the book's or Coulomb's), friction: false drops it, and rotation:
-// false drops every angular term of the response.
-//
 // The book draws the collision info from inside the pass. Here the pass only records
 // what it found, and the core draws it after the shapes, so every frame shows what
 // the last relaxation pass still found.
 
 #include <cstddef>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "canvas.h"
 #include "collision_info.h"
 #include "rigid_shape.h"
-#include "scene_file.h"
-#include "spatial_grid.h"
+#include "world_settings.h"
 
 namespace engine {
 
-// The book's relaxation: 15 passes per step, each removing 80% of every overlap it
-// finds, so an overlap left alone shrinks to 0.2^15 (3e-11) of its depth in one step.
-inline constexpr int kRelaxationCount = 15;
-inline constexpr double kPosCorrectionRate = 0.8;
+// The world's shapes, as the core keeps them.
+using ShapeList = std::span<const std::unique_ptr<RigidShape>>;
 
 // Two shapes the pass found colliding, by their places in the list; first < second.
 struct Collision {
@@ -63,40 +50,25 @@ struct Collision {
     CollisionInfo info;  // its normal points from the first shape towards the second
 };
 
-// The narrow phase. The info's normal is turned, where needed, to point from `a`
-// towards `b`, whichever shape's test worked it out.
-std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& b);
-// The book's broad phase, the bounding circles, then the narrow phase.
+// Broad phase, then narrow phase. The info's normal is turned, where needed, to point
+// from `a` towards `b`, whichever shape's test worked it out.
 std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b);
 
 class Physics {
 public:
     // world.relaxation_iterations passes, each testing every pair of shapes once and
     // resolving each pair that collides; pairs of two static shapes are left out.
-    void collision(ShapeList shapes, const browser::WorldSettings& world);
+    void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
-
-    // What the last collision() call (one step, or one sub-step) did, summed over its
-    // passes: the pairs the broad phase handed on for a closer look (every pair but
-    // static-static ones, except with the grid), and how many of them reached the
-    // narrow phase.
-    long candidatePairs() const { return candidate_pairs_; }
-    long narrowPhaseTests() const { return narrow_phase_tests_; }
 
     // Draws the collision info of every pair the last pass found: an orange line
     // from start to end.
     void drawCollisions(browser::Canvas& context) const;
 
 private:
-    void relaxationPass(ShapeList shapes, const browser::WorldSettings& world);
-    void gridRow(ShapeList shapes, std::size_t i, const browser::WorldSettings& world);
-    // Tests the pair and, when it collides, records and resolves it; true if it did.
-    bool testAndResolve(ShapeList shapes, std::size_t i, std::size_t j, const browser::WorldSettings& world);
+    void relaxationPass(ShapeList shapes, const WorldSettings& world);
 
     std::vector<Collision> collisions_;
-    SpatialGrid grid_;
-    long candidate_pairs_ = 0;
-    long narrow_phase_tests_ = 0;
 };
 
 }  // namespace engine

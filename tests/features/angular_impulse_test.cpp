@@ -21,8 +21,8 @@ constexpr Vec2 kNoGravity{0, 0};
 constexpr double kHandWorked = 1e-9;
 
 // A world without gravity (unless given) and with positional correction on or off.
-browser::WorldSettings world(bool positional_correction, Vec2 gravity = kNoGravity) {
-    browser::WorldSettings settings = test::world(true, gravity);
+engine::WorldSettings world(bool positional_correction, Vec2 gravity = kNoGravity) {
+    engine::WorldSettings settings = test::world(true, gravity);
     settings.positional_correction = positional_correction;
     return settings;
 }

@@ -130,7 +130,7 @@ TEST_CASE("movement: a static body feels no gravity") {
 TEST_CASE("movement: the world's dt is both the integration step and the loop's fixed step") {
     // dt = 1/30 s with 60 Hz frames: an update every second frame, each moving the
     // ball by its new velocity times 1/30 s.
-    browser::WorldSettings settings = test::world(true);
+    engine::WorldSettings settings = test::world(true);
     settings.dt = 1.0 / 30.0;
     browser::Window window(1000.0 / 60.0);
     engine::Core core(window, settings);

@@ -55,7 +55,7 @@ std::vector<test::DumpRow> rowsOfStep(const std::vector<test::DumpRow>& rows, lo
 
 TEST_CASE("scene files: bodies come in file order, turned, moving, with their attributes") {
     const test::ScratchFolder folder("scene-build");
-    const browser::SceneDescription scene = browser::load_scene(folder.write("scene.json", kScene), engine::kBookWorld);
+    const engine::Scene scene = engine::loadScene(folder.write("scene.json", kScene));
     test::WorldFixture page(scene.world);
     engine::buildScene(page.core, scene.bodies);
     REQUIRE(page.core.objectCount() == 3);

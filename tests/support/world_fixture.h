@@ -20,15 +20,15 @@ namespace test {
 using browser::Vec2;
 
 // The book's chapter 4 world with its flags and gravity set as a test needs them.
-inline browser::WorldSettings world(bool movement, Vec2 gravity = engine::kGravity) {
-    browser::WorldSettings settings = engine::kBookWorld;
+inline engine::WorldSettings world(bool movement, Vec2 gravity = engine::kGravity) {
+    engine::WorldSettings settings = engine::kBookWorld;
     settings.movement = movement;
     settings.gravity = gravity;
     return settings;
 }
 
 struct WorldFixture {
-    explicit WorldFixture(const browser::WorldSettings& settings, std::uint64_t seed = 1)
+    explicit WorldFixture(const engine::WorldSettings& settings, std::uint64_t seed = 1)
         : window(settings.dt * 1000.0), random(seed), core(window, settings) {}
 
     void press(browser::Key key, int times = 1) {

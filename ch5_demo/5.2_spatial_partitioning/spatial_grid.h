@@ -1,6 +1,6 @@
 #pragma once
-// The grid broad phase (world.broad_phase "grid"): the "spatial partitioning" that
-// chapter 5 suggests for worlds with many shapes.
+// The grid broad phase (world.broad_phase "grid"): the spatial partitioning of the
+// book's "Further Exploration", for worlds with many shapes.
 //
 // The book's broad phase tests the bounding circles of every pair, n (n - 1) / 2 tests
 // a pass, although most pairs lie far apart. The grid lays square cells over the plane
@@ -20,8 +20,8 @@
 //  2. Every candidate still goes through the bounding-circle test, so an extra one
 //     changes nothing; only a missing one would.
 //  3. The relaxation pass resolves each pair as soon as it finds it, so shapes move
-//     during the pass. The grid follows: after every resolved pair both shapes' cells
-//     are brought up to date at once (usually they have not changed). While the pass
+//     during the pass. The grid follows: after every resolved pair (moved()) both
+//     shapes' cells are brought up to date at once (usually they have not changed). While the pass
 //     works on shape i's row, pairs (i, j > i) in order, only shape i and the j just
 //     resolved move; the shapes still ahead in the row stay put. So the row's
 //     candidates, gathered when it starts, stay right unless shape i's own cells
@@ -38,32 +38,35 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <vector>
 
+#include "broad_phase.h"
 #include "rigid_shape.h"
 
 namespace engine {
 
-class SpatialGrid {
+class SpatialGrid final : public BroadPhase {
 public:
-    // Sorts every shape into the cells its box covers, the cells three times as wide as
-    // the median bound radius of the moving shapes. The shapes must stay in the list,
-    // unchanged in number and order, until the next build.
-    void build(ShapeList shapes);
+    // Pair (i, j) was resolved: both shapes are filed anew, and when shape i now covers
+    // other cells, the rest of row i (the candidates after j) is gathered again.
+    void moved(std::size_t i, std::size_t j) override;
+
+private:
+    // Once per step: sorts every shape into the cells its box covers, the cells three
+    // times as wide as the median bound radius of the moving shapes.
+    void prepare(ShapeList shapes) override;
+    // Row i walks the list candidates(i, i) gathers.
+    std::size_t firstCandidate(std::size_t i) override;
+    std::size_t nextCandidate(std::size_t i, std::size_t j) override;
+    bool boundsOverlap(const RigidShape& a, const RigidShape& b) const override { return a.boundTest(b); }
 
     // The shapes with an index above `after` that may touch shape `index`: those that
     // share a cell with it and the oversize ones (all of them above `after`, when shape
-    // `index` is oversize itself), in ascending order, each once. The view is good
-    // until the next call.
-    std::span<const std::size_t> candidates(std::size_t index, std::size_t after);
-
+    // `index` is oversize itself), in ascending order, each once.
+    void gatherCandidates(std::size_t index, std::size_t after);
     // Moves shape `index` to the cells its box covers now. True when they changed.
     bool update(std::size_t index);
 
-    double cellSize() const { return cell_size_; }
-
-private:
     // The cells a box covers: columns x0..x1 and rows y0..y1.
     struct CellRange {
         std::int32_t x0, y0, x1, y1;
@@ -95,9 +98,10 @@ private:
     std::vector<bool> oversize_;    // per shape
     std::vector<std::size_t> oversize_list_;  // ascending
 
-    // candidates(): the list handed out, and a mark per shape, "already on the list"
-    // when it equals the current round.
-    std::vector<std::size_t> found_;
+    // The row being walked: its candidates, the next one to hand out, and a mark per
+    // shape, "already on the list" when it equals the current round.
+    std::vector<std::size_t> row_;
+    std::size_t next_in_row_ = 0;
     std::vector<std::uint64_t> seen_in_round_;
     std::uint64_t round_ = 0;
 };

@@ -42,7 +42,7 @@ double reachOf(const RigidShape& shape) {
 
 }  // namespace
 
-void SpatialGrid::build(ShapeList shapes) {
+void SpatialGrid::prepare(ShapeList shapes) {
     shapes_ = shapes;
     cell_size_ = chooseCellSize(shapes);
 
@@ -76,8 +76,8 @@ void SpatialGrid::build(ShapeList shapes) {
 }
 
 // The median rather than the mean, so that one huge platform does not make every cell
-// huge. Static shapes are left out when there are moving ones: pairs of static shapes
-// are never tested, so it is the moving shapes' neighbourhoods that matter.
+// huge. Static shapes are left out when there are moving ones: a pair of static shapes
+// is never resolved, so it is the moving shapes' neighbourhoods that matter.
 double SpatialGrid::chooseCellSize(ShapeList shapes) {
     radii_.clear();
     for (const auto& shape : shapes) {
@@ -92,11 +92,26 @@ double SpatialGrid::chooseCellSize(ShapeList shapes) {
     return kCellPerMedianRadius * *middle;
 }
 
-std::span<const std::size_t> SpatialGrid::candidates(std::size_t index, std::size_t after) {
-    found_.clear();
+std::size_t SpatialGrid::firstCandidate(std::size_t i) {
+    gatherCandidates(i, i);
+    return nextCandidate(i, i);
+}
+
+std::size_t SpatialGrid::nextCandidate(std::size_t, std::size_t) {
+    return next_in_row_ < row_.size() ? row_[next_in_row_++] : shapes_.size();
+}
+
+void SpatialGrid::moved(std::size_t i, std::size_t j) {
+    update(j);
+    if (update(i)) gatherCandidates(i, j);
+}
+
+void SpatialGrid::gatherCandidates(std::size_t index, std::size_t after) {
+    row_.clear();
+    next_in_row_ = 0;
     if (oversize_[index]) {
-        for (std::size_t j = after + 1; j < shapes_.size(); ++j) found_.push_back(j);
-        return found_;
+        for (std::size_t j = after + 1; j < shapes_.size(); ++j) row_.push_back(j);
+        return;
     }
     // A shape covering several cells, or met again in a chain that two cells share, is
     // taken once.
@@ -108,15 +123,14 @@ std::span<const std::size_t> SpatialGrid::candidates(std::size_t index, std::siz
                 const std::size_t j = entries_[e].shape;
                 if (j <= after || seen_in_round_[j] == round_) continue;
                 seen_in_round_[j] = round_;
-                found_.push_back(j);
+                row_.push_back(j);
             }
         }
     }
     const auto first_oversize = std::upper_bound(oversize_list_.begin(), oversize_list_.end(), after);
-    found_.insert(found_.end(), first_oversize, oversize_list_.end());
+    row_.insert(row_.end(), first_oversize, oversize_list_.end());
     // The pass must meet the pairs in the order testing every pair would.
-    std::sort(found_.begin(), found_.end());
-    return found_;
+    std::sort(row_.begin(), row_.end());
 }
 
 bool SpatialGrid::update(std::size_t index) {

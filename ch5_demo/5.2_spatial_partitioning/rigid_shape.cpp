@@ -1,0 +1,59 @@
+#include "rigid_shape.h"
+
+namespace engine {
+
+namespace {
+// Gravity is the only force in the book, and nothing applies a torque: the angular
+// acceleration is always 0. update() still adds it, to show that turning takes the
+// same two steps as moving.
+constexpr double kAngularAcceleration = 0.0;  // rad/s^2
+}  // namespace
+
+// Every shape starts unturned and at rest; angle_ keeps count of the turns that follow.
+RigidShape::RigidShape(ShapeType type, Vec2 center, double bound_radius, PhysicalAttributes attributes)
+    : type_(type),
+      center_(center),
+      bound_radius_(bound_radius),
+      inv_mass_(attributes.mass > 0.0 ? 1.0 / attributes.mass : 0.0),
+      friction_(attributes.friction),
+      restitution_(attributes.restitution) {}
+
+bool RigidShape::boundTest(const RigidShape& other) const {
+    // Two circles overlap exactly when their centres are no farther apart than their
+    // radii added up; at exactly that distance they touch, which counts.
+    return center_.distance(other.center_) <= bound_radius_ + other.bound_radius_;
+}
+
+// Symplectic Euler integration (Figure 4-2, right): first the velocity takes the
+// acceleration of the step, v += a dt, then the *new* velocity moves the shape,
+// p += v dt. Explicit Euler would move with the old velocity instead. The angle
+// follows the same two steps with the angular velocity.
+void RigidShape::update(const WorldSettings& world) {
+    if (!world.movement) return;
+    const double dt = world.dt;
+    // F = m a with gravity's force m g gives a = g for every mass; a static body has no
+    // acceleration at all.
+    const Vec2 acceleration = isStatic() ? Vec2{} : world.gravity;
+    velocity_ += acceleration * dt;
+    move(velocity_ * dt);
+    angular_velocity_ += kAngularAcceleration * dt;
+    rotate(angular_velocity_ * dt);
+}
+
+void RigidShape::updateMass(double delta) {
+    const double mass = this->mass() + delta;
+    if (mass <= 0.0) {
+        inv_mass_ = 0.0;
+        velocity_ = Vec2{};
+        angular_velocity_ = 0.0;
+    } else {
+        inv_mass_ = 1.0 / mass;
+    }
+    updateInertia();
+}
+
+void RigidShape::updateInertia() {
+    inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass());
+}
+
+}  // namespace engine
