@@ -14,25 +14,68 @@
 
 namespace fs = std::filesystem;
 using browser::BodyDescription;
-using browser::load_scene;
 using browser::SceneError;
 using browser::ShapeKind;
 using browser::Vec2;
-using browser::WorldSettings;
+using browser::WorldKey;
 
 namespace {
 
 using test::ScratchFolder;
 
+// A stage's world, as a stage would write it: the book's settings and, like the stages
+// beyond the book, a count and a word from a list, so every kind of WorldKey is read.
+enum class Method { plain, fancy };
+struct WorldSettings {
+    double width = 800.0;
+    double height = 450.0;
+    Vec2 gravity{0.0, 10.0};
+    double dt = 1.0 / 60.0;
+    int relaxation_iterations = 15;
+    double correction_rate = 0.8;
+    bool movement = false;
+    bool positional_correction = true;
+    bool remove_out_of_bounds = false;
+    Method method = Method::plain;
+    friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
+};
+
+std::vector<WorldKey> worldKeys(WorldSettings& world) {
+    namespace rules = browser::rules;
+    return {
+        {"width", world.width, rules::kCanvasSize},
+        {"height", world.height, rules::kCanvasSize},
+        {"gravity", world.gravity},
+        {"dt", world.dt, rules::kTimeStep},
+        {"relaxation_iterations", world.relaxation_iterations, rules::kPassCount},
+        {"correction_rate", world.correction_rate, rules::kFraction},
+        {"movement", world.movement},
+        {"positional_correction", world.positional_correction},
+        {"remove_out_of_bounds", world.remove_out_of_bounds},
+        {"method", world.method, {{"plain", Method::plain}, {"fancy", Method::fancy}}},
+    };
+}
+
 // 5.1's defaults differ from WorldSettings{} in gravity, movement and out-of-bounds
 // removal, so a test can tell a value taken from `defaults` from a member default.
 const WorldSettings kDemoDefaults{.gravity = {0.0, 20.0}, .movement = true, .remove_out_of_bounds = true};
 
+struct Scene {
+    WorldSettings world;
+    std::vector<BodyDescription> bodies;
+};
+
+// The scene in `file`, its world keys read into `defaults` as a stage reads them.
+Scene load_scene(const fs::path& file, const WorldSettings& defaults) {
+    Scene scene{defaults, {}};
+    scene.bodies = browser::load_scene(file, worldKeys(scene.world));
+    return scene;
+}
 
 // The message load_scene refuses `file` with ("" when it loads).
-std::string refusal(const fs::path& file, browser::WorldKeys keys = browser::WorldKeys::book) {
+std::string refusal(const fs::path& file) {
     try {
-        load_scene(file, kDemoDefaults, keys);
+        load_scene(file, kDemoDefaults);
     } catch (const SceneError& error) {
         return error.what();
     }
@@ -209,7 +252,7 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
         {R"({"bodies": [3]})", "bodies[0]: must be an object {...} (got 3)"},
         // Unknown keys, everywhere, and keys of the other shape.
         {R"({"bodys": []})", "bodys: unknown key; a scene takes world, bodies"},
-        {world(R"("gravty": [0, 1])"), "world.gravty: unknown key; world takes width, height, gravity, dt, "},
+        {world(R"("gravty": [0, 1])"), "world.gravty: unknown key; this stage's world takes width, height, gravity, dt, "},
         {body(circle + R"(, "raduis": 2)"), "bodies[0].raduis: unknown key; a circle body takes shape, center, "
                                             "radius, mass, friction, restitution, angle, velocity, angular_velocity"},
         {body(rectangle + R"(, "radius": 2)"), "bodies[0].radius: unknown key; a rectangle body takes shape, center, "
@@ -287,9 +330,10 @@ TEST_CASE("scene_file: messages stay one short line whatever the file holds") {
     ScratchFolder folder("one_line");
     // A key with a line break in it, quoted in the path.
     const fs::path strange_key = folder.write("key.json", R"({"world": {"a\nb": 1}})");
-    CHECK(refusal(strange_key) == strange_key.string() + R"(: world["a\nb"]: unknown key; world takes width, height, )"
-                                                         "gravity, dt, relaxation_iterations, correction_rate, "
-                                                         "movement, positional_correction, remove_out_of_bounds");
+    CHECK(refusal(strange_key) == strange_key.string() + R"(: world["a\nb"]: unknown key; this stage's world takes )"
+                                                         "width, height, gravity, dt, relaxation_iterations, "
+                                                         "correction_rate, movement, positional_correction, "
+                                                         "remove_out_of_bounds, method");
     // A long value, cut short.
     const fs::path long_value = folder.write("long.json", R"({"bodies": ")" + std::string(500, 'x') + "\"}");
     const std::string message = refusal(long_value);
@@ -306,89 +350,37 @@ TEST_CASE("scene_file: the file name appears as it was given") {
     CHECK(refusal(detour).rfind(detour.string() + ": world.dt: ", 0) == 0);
 }
 
-// The knobs of issue 7: only stage 5.1's engine reads them, so only a reader asked for
-// them (WorldKeys::with_knobs) accepts them; chapter 4's stages refuse them like a typo.
-namespace {
-std::string refusal_with_knobs(const fs::path& file) { return refusal(file, browser::WorldKeys::with_knobs); }
-}  // namespace
-
-TEST_CASE("scene_file: the speed/accuracy knobs load with exactly their values") {
-    ScratchFolder folder("knobs");
-    const fs::path file = folder.write("scene.json", R"({"world": {
-        "substeps": 4, "integrator": "explicit", "broad_phase": "grid",
-        "friction_model": "coulomb", "rotation": false, "friction": false}})");
-    const WorldSettings world = load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs).world;
-    CHECK(world.substeps == 4);
-    CHECK(world.integrator == browser::Integrator::explicit_euler);
-    CHECK(world.broad_phase == browser::BroadPhase::grid);
-    CHECK(world.friction_model == browser::FrictionModel::coulomb);
-    CHECK_FALSE(world.rotation);
-    CHECK_FALSE(world.friction);
-    // Everything else is the stage's default.
-    WorldSettings expected = kDemoDefaults;
-    expected.substeps = 4;
-    expected.integrator = browser::Integrator::explicit_euler;
-    expected.broad_phase = browser::BroadPhase::grid;
-    expected.friction_model = browser::FrictionModel::coulomb;
-    expected.rotation = false;
-    expected.friction = false;
-    CHECK(world == expected);
+TEST_CASE("scene_file: a word from a list loads as its value, and a bad one is refused with the choices") {
+    ScratchFolder folder("words");
+    CHECK(load_scene(folder.write("fancy.json", R"({"world": {"method": "fancy"}})"), kDemoDefaults).world.method ==
+          Method::fancy);
+    CHECK(load_scene(folder.write("plain.json", R"({"world": {"method": "plain"}})"), kDemoDefaults).world.method ==
+          Method::plain);
+    const fs::path bad = folder.write("bad.json", R"({"world": {"method": "clever"}})");
+    CHECK(refusal(bad) == bad.string() + R"(: world.method: must be "plain" or "fancy" (got "clever"))");
+    const fs::path number = folder.write("number.json", R"({"world": {"method": 1}})");
+    CHECK(refusal(number) == number.string() + R"(: world.method: must be "plain" or "fancy" (got 1))");
 }
 
-TEST_CASE("scene_file: left out, the knobs are the book's engine") {
-    const WorldSettings book;
-    CHECK(book.substeps == 1);
-    CHECK(book.integrator == browser::Integrator::symplectic);
-    CHECK(book.broad_phase == browser::BroadPhase::bounding_circle);
-    CHECK(book.friction_model == browser::FrictionModel::book);
-    CHECK(book.rotation);
-    CHECK(book.friction);
-    ScratchFolder folder("no_knobs");
-    CHECK(load_scene(folder.write("scene.json", "{}"), kDemoDefaults, browser::WorldKeys::with_knobs).world ==
-          kDemoDefaults);
+TEST_CASE("scene_file: a key the stage does not list is refused, naming the keys it reads") {
+    // What a chapter 4 stage says to a knob of the stages beyond the book.
+    ScratchFolder folder("not_read");
+    const fs::path file = folder.write("scene.json", R"({"world": {"broad_phase": "grid"}})");
+    CHECK_THAT(refusal(file), Catch::StartsWith(file.string() + ": world.broad_phase: unknown key; this stage's "
+                                                               "world takes width, height, gravity, dt, "));
+    // A stage that reads no world key at all refuses every one.
+    std::vector<WorldKey> none;
+    CHECK_THROWS_WITH(browser::load_scene(folder.write("dt.json", R"({"world": {"dt": 0.01}})"), none),
+                      Catch::Contains("world.dt: unknown key"));
+    CHECK(browser::load_scene(folder.write("empty.json", R"({"world": {}})"), none).empty());
 }
 
-TEST_CASE("scene_file: every knob value is spelled as the scene format says") {
-    using browser::knob_name;
-    CHECK(knob_name(browser::Integrator::symplectic) == "symplectic");
-    CHECK(knob_name(browser::Integrator::explicit_euler) == "explicit");
-    CHECK(knob_name(browser::BroadPhase::bounding_circle) == "bounding_circle");
-    CHECK(knob_name(browser::BroadPhase::all_pairs) == "all_pairs");
-    CHECK(knob_name(browser::BroadPhase::grid) == "grid");
-    CHECK(knob_name(browser::FrictionModel::book) == "book");
-    CHECK(knob_name(browser::FrictionModel::coulomb) == "coulomb");
-    ScratchFolder folder("spelling");
-    for (const auto phase : {browser::BroadPhase::bounding_circle, browser::BroadPhase::all_pairs,
-                             browser::BroadPhase::grid}) {
-        std::string text = R"({"world": {"broad_phase": ")";
-        const fs::path file = folder.write("scene.json", text.append(knob_name(phase)).append(R"("}})"));
-        CHECK(load_scene(file, kDemoDefaults, browser::WorldKeys::with_knobs).world.broad_phase == phase);
-    }
-}
-
-TEST_CASE("scene_file: bad knob values are refused with the choices") {
-    ScratchFolder folder("bad_knobs");
-    const auto world = [&](const std::string& members) {
-        return folder.write("scene.json", R"({"world": {)" + members + "}}");
-    };
-    CHECK(refusal_with_knobs(world(R"("integrator": "verlet")")) ==
-          folder.path.string() + R"(/scene.json: world.integrator: must be "symplectic" or "explicit" (got "verlet"))");
-    CHECK(refusal_with_knobs(world(R"("broad_phase": "quadtree")")) ==
-          folder.path.string() +
-              R"(/scene.json: world.broad_phase: must be "bounding_circle", "all_pairs" or "grid" (got "quadtree"))");
-    CHECK(refusal_with_knobs(world(R"("friction_model": 1)")) ==
-          folder.path.string() + R"(/scene.json: world.friction_model: must be "book" or "coulomb" (got 1))");
-    CHECK(refusal_with_knobs(world(R"("substeps": 0)")) ==
-          folder.path.string() + "/scene.json: world.substeps: must be a whole number in [1, 1000] (got 0)");
-    CHECK(refusal_with_knobs(world(R"("substeps": 2.5)")) ==
-          folder.path.string() + "/scene.json: world.substeps: must be a whole number in [1, 1000] (got 2.5)");
-    CHECK(refusal_with_knobs(world(R"("rotation": "no")")) ==
-          folder.path.string() + R"(/scene.json: world.rotation: must be true or false (got "no"))");
-}
-
-TEST_CASE("scene_file: a chapter 4 stage refuses the knobs it does not read") {
-    ScratchFolder folder("chapter4");
-    const std::string message = refusal(folder.write("scene.json", R"({"world": {"broad_phase": "grid"}})"));
-    CHECK_THAT(message, Catch::StartsWith(folder.path.string() + "/scene.json: world.broad_phase: unknown key;"));
-    CHECK_THAT(message, !Catch::Contains("substeps"));
+TEST_CASE("scene_file: a refused file leaves every setting as it was") {
+    // The world is read before the bodies; a bad body must not leave a half-read world.
+    ScratchFolder folder("half");
+    const fs::path file = folder.write("scene.json", R"({"world": {"gravity": [0, 99], "method": "fancy"},
+        "bodies": [{"shape": "circle", "center": [0, 0], "radius": -1}]})");
+    WorldSettings world = kDemoDefaults;
+    CHECK_THROWS_AS(browser::load_scene(file, worldKeys(world)), SceneError);
+    CHECK(world == kDemoDefaults);
 }

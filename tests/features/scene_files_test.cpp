@@ -3,7 +3,9 @@
 // is tested once, in tests/common/scene_file_test.cpp.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -51,7 +53,84 @@ std::vector<test::DumpRow> rowsOfStep(const std::vector<test::DumpRow>& rows, lo
     return found;
 }
 
+// Every world key some stage reads, each with a value that stage accepts.
+const std::map<std::string, std::string> kEveryWorldKey{
+    {"width", "640"},
+    {"height", "400"},
+    {"gravity", "[0, 5]"},
+    {"dt", "0.01"},
+    {"movement", "true"},
+    {"relaxation_iterations", "3"},
+    {"correction_rate", "0.5"},
+    {"positional_correction", "false"},
+    {"remove_out_of_bounds", "false"},
+    {"broad_phase", "\"all_pairs\""},
+    {"substeps", "2"},
+    {"integrator", "\"explicit\""},
+    {"friction_model", "\"coulomb\""},
+    {"rotation", "false"},
+    {"friction", "false"},
+};
+
+// The keys each stage reads, as docs/scene_format.md tables them: the book's settings
+// arrive with the project that introduces them, the knobs with their own stage.
+const std::map<std::string, std::vector<std::string>> kKeysOfStage{
+    {"s4_1", {"width", "height", "gravity", "dt", "movement"}},
+    {"s4_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction"}},
+    {"s4_3", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction"}},
+    {"s4_4", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction"}},
+    {"s5_1", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds"}},
+    {"s5_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase"}},
+    {"s5_3", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
+              "friction_model", "rotation", "friction"}},
+};
+
+std::string commaList(const std::vector<std::string>& words) {
+    std::string list;
+    for (const std::string& word : words) list.append(list.empty() ? "" : ", ").append(word);
+    return list;
+}
+
+std::vector<std::string> keysThisStageReads() {
+    engine::WorldSettings world;
+    std::vector<std::string> names;
+    for (const browser::WorldKey& key : engine::worldKeys(world)) names.emplace_back(key.name());
+    return names;
+}
+
 }  // namespace
+
+TEST_CASE("scene files: the stage reads exactly the world keys of its book project") {
+    REQUIRE(kKeysOfStage.contains(STAGE_ID));
+    CHECK(keysThisStageReads() == kKeysOfStage.at(STAGE_ID));
+}
+
+TEST_CASE("scene files: the program takes each world key the stage reads and refuses every other one") {
+    const std::vector<std::string> read = keysThisStageReads();
+    for (const std::string& name : read) CHECK(kEveryWorldKey.contains(name));  // a new key belongs in the list
+    for (const auto& [name, value] : kEveryWorldKey) {
+        const bool reads = std::find(read.begin(), read.end(), name) != read.end();
+        INFO(name << (reads ? " (read)" : " (not read)"));
+        const test::ScratchFolder folder("scene-key");
+        folder.write("scene.json", R"({"world": {")" + name + "\": " + value + "}}");
+        const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "scene.json", "--frames 1"));
+        if (reads) {
+            CHECK(run.status == 0);
+            continue;
+        }
+        CHECK(run.status == 2);
+        CHECK(run.error_text == (folder.path / "scene.json").string() + ": world." + name +
+                                    ": unknown key; this stage's world takes " + commaList(read) + "\n");
+        CHECK_FALSE(fs::exists(folder.path / "out"));
+        CHECK_FALSE(fs::exists(folder.path / "dump.csv"));
+    }
+}
 
 TEST_CASE("scene files: bodies come in file order, turned, moving, with their attributes") {
     const test::ScratchFolder folder("scene-build");
