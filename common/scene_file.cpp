@@ -311,25 +311,22 @@ constexpr bool kRequired = true;
 
 std::vector<BodyKey> body_keys(ShapeKind shape) {
     using B = BodyDescription;
-    if (shape == ShapeKind::rectangle) {
-        return {{"center", &B::center, rules::kFinite, kRequired},
-                {"width", &B::width, rules::kPositive, kRequired},
-                {"height", &B::height, rules::kPositive, kRequired},
-                {"mass", &B::mass, kNotNegative},
-                {"friction", &B::friction, kNotNegative},
-                {"restitution", &B::restitution, rules::kFraction},
-                {"angle", &B::angle},
-                {"velocity", &B::velocity},
-                {"angular_velocity", &B::angular_velocity}};
-    }
-    return {{"center", &B::center, rules::kFinite, kRequired},
-            {"radius", &B::radius, rules::kPositive, kRequired},
-            {"mass", &B::mass, kNotNegative},
-            {"friction", &B::friction, kNotNegative},
-            {"restitution", &B::restitution, rules::kFraction},
-            {"angle", &B::angle},
-            {"velocity", &B::velocity},
-            {"angular_velocity", &B::angular_velocity}};
+    static const BodyKey kRectangleSizes[] = {{"width", &B::width, rules::kPositive, kRequired},
+                                              {"height", &B::height, rules::kPositive, kRequired}};
+    static const BodyKey kCircleSizes[] = {{"radius", &B::radius, rules::kPositive, kRequired}};
+    static const BodyKey kAttributes[] = {{"mass", &B::mass, kNotNegative},
+                                          {"friction", &B::friction, kNotNegative},
+                                          {"restitution", &B::restitution, rules::kFraction},
+                                          {"angle", &B::angle},
+                                          {"velocity", &B::velocity},
+                                          {"angular_velocity", &B::angular_velocity}};
+    const std::span<const BodyKey> sizes =
+        shape == ShapeKind::rectangle ? std::span<const BodyKey>(kRectangleSizes) : std::span<const BodyKey>(kCircleSizes);
+    std::vector<BodyKey> keys{{"center", &B::center, rules::kFinite, kRequired}};
+    keys.reserve(1 + sizes.size() + std::size(kAttributes));
+    for (const BodyKey& key : sizes) keys.push_back(key);
+    for (const BodyKey& key : kAttributes) keys.push_back(key);
+    return keys;
 }
 
 BodyDescription read_body(const json& object, const std::string& path) {
