@@ -39,10 +39,17 @@ void Core::keepFirstObjects(std::size_t count) {
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
+// The book's order (3.1 on): the frame shows the world as it stands, then runs the
+// updates that are due, so each picture shows the state from before that frame's
+// updates. The book's pass draws each collision onto that picture as it finds it; ours
+// records them, and the frame draws what the last pass found once the updates are
+// done. A frame that ran no pass adds nothing.
 void Core::runGameLoop() {
-    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     updateUIEcho();
     draw();
+    const int due = timer_.updatesDue(window_.clock.nowMs());
+    for (int k = 0; k < due; ++k) update();
+    if (due > 0) physics_.drawCollisions(window_.document.canvas);
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.
@@ -79,7 +86,6 @@ void Core::draw() {
         context.setStrokeStyle(i == selected_ ? browser::colors::kRed : browser::colors::kBlue);
         all_objects_[i]->draw(context);
     }
-    physics_.drawCollisions(context);
 }
 
 }  // namespace engine

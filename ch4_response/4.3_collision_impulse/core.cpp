@@ -50,10 +50,13 @@ void Core::keepFirstObjects(std::size_t count) {
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
+// The book's order (3.1 on): the frame shows the world as it stands, then runs the
+// updates that are due, so each picture shows the state from before that frame's
+// updates. From 4.3 on the book's pass no longer draws the collisions it finds.
 void Core::runGameLoop() {
-    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     updateUIEcho();
     draw();
+    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.
@@ -107,7 +110,6 @@ void Core::draw() {
         context.setStrokeStyle(i == selected_ ? browser::colors::kRed : browser::colors::kBlue);
         all_objects_[i]->draw(context);
     }
-    physics_.drawCollisions(context);
 }
 
 }  // namespace engine
