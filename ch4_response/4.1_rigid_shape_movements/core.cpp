@@ -7,11 +7,6 @@
 namespace engine {
 
 namespace {
-// 1000/60 has no exact binary form: the book's step is a hair above 50/3 ms, so three
-// of them add up to a hair more than 50 ms. Without this slack a 50 ms frame would run two updates and
-// carry almost a whole step to the next frame. Far below a millisecond, it changes
-// nothing else.
-constexpr double kTimeSlackMs = 1e-9;
 constexpr double kMsPerSecond = 1000.0;
 
 // The book's echo prints numbers with toPrecision(3).
@@ -24,11 +19,14 @@ std::string echoVector(Vec2 v) {
 std::string echoFlag(bool on) { return on ? "On" : "Off"; }
 }  // namespace
 
+// As in the book, the lag is compared with the step exactly. 1000/60 ms has no exact
+// binary form: the step is a hair above 50/3, so three of them add up to a hair more
+// than 50 ms, and a 50 ms frame runs two updates and carries almost a whole step.
 int FixedStepTimer::updatesDue(double now_ms) {
     lag_ms_ += now_ms - previous_ms_;
     previous_ms_ = now_ms;
     int updates = 0;
-    while (lag_ms_ >= step_ms_ - kTimeSlackMs) {
+    while (lag_ms_ >= step_ms_) {
         lag_ms_ -= step_ms_;
         ++updates;
     }
