@@ -16,7 +16,17 @@ std::string echoVector(Vec2 v) {
     std::string text = echoNumber(v.x);
     return text.append(",").append(echoNumber(v.y));
 }
-std::string echoFlag(bool on) { return on ? "On" : "Off"; }
+// JavaScript prints a flag as true or false.
+std::string echoFlag(bool on) { return on ? "true" : "false"; }
+// The book prints `1 / invMass.toPrecision(3)`. toPrecision binds first and gives back
+// text, which the division reads as a number again: so the echo shows 1 over the
+// inverse mass *rounded to 3 digits*, printed with all the digits JavaScript prints by
+// default. Mass 7 shows as 1 / 0.143 = 6.993006993006993, mass 5 as 5, and a static
+// shape as 1 / 0 = Infinity (docs/errata.md).
+std::string echoMass(const RigidShape& shape) {
+    const double shown_inverse_mass = std::stod(echoNumber(shape.invMass()));
+    return browser::to_js_string(1.0 / shown_inverse_mass);
+}
 }  // namespace
 
 // As in the book, the lag is compared with the step exactly. 1000/60 ms has no exact
@@ -80,7 +90,7 @@ void Core::updateUIEcho() {
         echo.append("  Angle: ").append(echoNumber(shape.angle())).append("\n");
         echo.append("  Velocity: ").append(echoVector(shape.velocity())).append("\n");
         echo.append("  Angular Velocity: ").append(echoNumber(shape.angularVelocity())).append("\n");
-        echo.append("  Mass: ").append(shape.isStatic() ? "0 (static)" : echoNumber(shape.mass())).append("\n");
+        echo.append("  Mass: ").append(echoMass(shape)).append("\n");
         echo.append("  Friction: ").append(echoNumber(shape.friction())).append("\n");
         echo.append("  Restitution: ").append(echoNumber(shape.restitution())).append("\n");
     } else {

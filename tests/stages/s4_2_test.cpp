@@ -36,11 +36,11 @@ TEST_CASE("s4_2: the echo shows the positional correction flag and the M key") {
     test::StageFixture page;
     test::buildBookScene(page.core, page.random);
     page.frame();
-    CHECK(page.window.document.ui_echo.find("Positional Correction: On\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("Positional Correction: true\n") != std::string::npos);
     CHECK(page.window.document.ui_echo.find("M: Positional Correction") != std::string::npos);
     page.press(browser::Key::M);
     page.frame();
-    CHECK(page.window.document.ui_echo.find("Positional Correction: Off\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("Positional Correction: false\n") != std::string::npos);
 }
 
 TEST_CASE("s4_2: two static shapes are still tested, and their collision drawn: the borders' corners") {
