@@ -21,9 +21,10 @@ namespace {
 // velocity; K sends them all down, and J takes back most of the push to the right that
 // 9 and 10 got, so that they fall onto the steep platform. The cursor, static like the
 // platforms, goes up out of their way. Circle 7 rolls down the upper platform to the
-// left, spinning, and over its end; box 8 glances off it and drifts left above it. Circle 9 lands on
-// the steep platform and slides down it, spinning up, then rolls on along the bottom;
-// box 10 tips over as it lands and tumbles down the slope in one long hop.
+// left, spinning, and over its end; box 8 glances off it and drifts left above it.
+// Circle 9 lands on the steep platform and slides down it, spinning up, then rolls on
+// along the bottom; box 10 tips over as it lands and tumbles down the slope in one
+// long hop.
 const browser::StageDefaults kStage{
     .id = "s4_4",
     .title = "4.4 Angular Impulse: shapes turn, roll and tumble",
