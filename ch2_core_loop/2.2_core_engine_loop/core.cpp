@@ -6,19 +6,14 @@
 
 namespace engine {
 
-namespace {
-// 1000/60 has no exact binary form: kMPF is a hair above 50/3, so three of them add up
-// to a hair more than 50 ms. Without this slack a 50 ms frame would run two updates and
-// carry almost a whole step to the next frame. Far below a millisecond, it changes
-// nothing else.
-constexpr double kTimeSlackMs = 1e-9;
-}  // namespace
-
+// As in the book, the lag is compared with the step exactly. 1000/60 ms has no exact
+// binary form: the step is a hair above 50/3, so three of them add up to a hair more
+// than 50 ms, and a 50 ms frame runs two updates and carries almost a whole step.
 int FixedStepTimer::updatesDue(double now_ms) {
     lag_ms_ += now_ms - previous_ms_;
     previous_ms_ = now_ms;
     int updates = 0;
-    while (lag_ms_ >= kMPF - kTimeSlackMs) {
+    while (lag_ms_ >= kMPF) {
         lag_ms_ -= kMPF;
         ++updates;
     }

@@ -14,8 +14,6 @@ void Physics::collision(ShapeList shapes) {
 void Physics::drawCollisions(browser::Canvas& context, ShapeList shapes) const {
     context.setStrokeStyle(browser::colors::kGreen);
     for (const Collision& pair : collisions_) {
-        // In a frame that runs no update, R can remove shapes after the latest pass.
-        if (pair.second >= shapes.size()) continue;
         shapes[pair.first]->draw(context);
         shapes[pair.second]->draw(context);
     }

@@ -8,9 +8,9 @@
 // but it reports some shapes that do not touch at all (a turned rectangle next to a
 // circle, Figure 3-5): the exact test that removes those comes in the next projects.
 //
-// The book draws the colliding shapes in green from inside the pass. Here the pass
-// only records what it found, and the core draws it after the shapes, so every frame
-// shows the result of the latest pass.
+// The book draws the colliding shapes in green from inside the pass, over the picture
+// the frame has just drawn. Here the pass only records what it found, and the core has
+// it drawn over that picture once the frame's updates are done (core.cpp).
 
 #include <cstddef>
 #include <memory>

@@ -6,19 +6,14 @@
 
 namespace engine {
 
-namespace {
-// 1000/60 has no exact binary form: kMPF is a hair above 50/3, so three of them add up
-// to a hair more than 50 ms. Without this slack a 50 ms frame would run two updates and
-// carry almost a whole step to the next frame. Far below a millisecond, it changes
-// nothing else.
-constexpr double kTimeSlackMs = 1e-9;
-}  // namespace
-
+// As in the book, the lag is compared with the step exactly. 1000/60 ms has no exact
+// binary form: the step is a hair above 50/3, so three of them add up to a hair more
+// than 50 ms, and a 50 ms frame runs two updates and carries almost a whole step.
 int FixedStepTimer::updatesDue(double now_ms) {
     lag_ms_ += now_ms - previous_ms_;
     previous_ms_ = now_ms;
     int updates = 0;
-    while (lag_ms_ >= kMPF - kTimeSlackMs) {
+    while (lag_ms_ >= kMPF) {
         lag_ms_ -= kMPF;
         ++updates;
     }
@@ -39,10 +34,17 @@ void Core::keepFirstObjects(std::size_t count) {
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
+// The book's order (3.1 on): the frame shows the world as it stands, then runs the
+// updates that are due, so each picture shows the state from before that frame's
+// updates. The book's pass draws each collision onto that picture as it finds it; ours
+// records them, and the frame draws what the last pass found once the updates are
+// done. A frame that ran no pass adds nothing.
 void Core::runGameLoop() {
-    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     updateUIEcho();
     draw();
+    const int due = timer_.updatesDue(window_.clock.nowMs());
+    for (int k = 0; k < due; ++k) update();
+    if (due > 0) physics_.drawCollisions(window_.document.canvas);
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.
@@ -79,7 +81,6 @@ void Core::draw() {
         context.setStrokeStyle(i == selected_ ? browser::colors::kRed : browser::colors::kBlue);
         all_objects_[i]->draw(context);
     }
-    physics_.drawCollisions(context);
 }
 
 }  // namespace engine

@@ -67,7 +67,9 @@ public:
     std::size_t selectedIndex() const { return selected_; }
     void select(std::size_t index);
 
-    // One animation frame: every update that is due, then the echo and one drawing.
+    // One animation frame, in the book's order: the echo and the drawing of the world
+    // as it stands, then every update that is due, then what the last collision pass
+    // found.
     void runGameLoop();
     const FixedStepTimer& timer() const { return timer_; }
     const Physics& physics() const { return physics_; }

@@ -7,9 +7,9 @@
 // that pass it get the exact, costlier narrow phase (collisionTest), which also says
 // how deep they overlap and in which direction.
 //
-// The book draws the collision info from inside the pass. Here the pass only records
-// what it found, and the core draws it after the shapes, so every frame shows the
-// result of the latest pass.
+// The book draws the collision info from inside the pass, over the picture the frame
+// has just drawn. Here the pass only records what it found, and the core has it drawn
+// over that picture once the frame's updates are done (core.cpp).
 
 #include <cstddef>
 #include <memory>

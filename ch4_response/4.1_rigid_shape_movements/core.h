@@ -73,7 +73,9 @@ public:
     // The comma key: starts and stops every shape's motion.
     void toggleMovement() { settings_.movement = !settings_.movement; }
 
-    // One animation frame: every update that is due, then the echo and one drawing.
+    // One animation frame, in the book's order: the echo and the drawing of the world
+    // as it stands, then every update that is due, then what the last collision pass
+    // found.
     void runGameLoop();
     // One fixed step of the world: the collision pass, then every shape's motion.
     // runGameLoop runs it as often as the timer says; tests may run it directly.

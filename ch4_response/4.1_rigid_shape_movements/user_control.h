@@ -30,6 +30,9 @@ public:
     static constexpr std::size_t kKeptOnReset = 5;
     // H kicks every moving shape: each velocity component uniform in [-10, 10) px/s.
     static constexpr double kExciteSpeed = 10.0;
+    // F/G: new shapes start at rest (the book's 4.1 has their random velocity commented
+    // out; from 4.2 on they fly off).
+    static constexpr double kSpawnSpeed = 0.0;
 
     UserControl(Core& core, browser::Random& random) : core_(core), random_(random) {}
     void onKeyDown(browser::Key key);

@@ -77,7 +77,9 @@ public:
     // The M key: turns positional correction on and off.
     void togglePositionalCorrection() { settings_.positional_correction = !settings_.positional_correction; }
 
-    // One animation frame: every update that is due, then the echo and one drawing.
+    // One animation frame, in the book's order: the echo and the drawing of the world
+    // as it stands, then every update that is due, then what the last collision pass
+    // found.
     void runGameLoop();
     // One fixed step of the world: the collision pass, then every shape's motion.
     // runGameLoop runs it as often as the timer says; tests may run it directly.

@@ -19,9 +19,10 @@ namespace {
 // The book's own experiment: positional correction (M) and movement start off; 14
 // shapes are created on top of each other at the cursor, low on the canvas. At frame
 // 30 positional correction comes on and pushes them apart in a few steps, until none
-// overlaps another. At frame 90 movement comes on: they fall onto the bottom border
-// and into each other, and are pushed out again, step after step. Nothing answers
-// their velocities yet, so they do not bounce.
+// overlaps another. At frame 90 movement comes on: each flies off at the random
+// velocity F/G gave it (up to 150 px/s a component), into the borders and into each
+// other, and is pushed out again, step after step. Nothing answers their velocities
+// yet, so nothing bounces: a shape that reaches a border stays pressed against it.
 const browser::StageDefaults kStage{
     .id = "s4_2",
     .title = "4.2 Positional Correction: relaxation pushes overlapping shapes apart",

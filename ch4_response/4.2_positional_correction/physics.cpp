@@ -17,6 +17,8 @@ void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& inf
 // What a collision does to the pair. In this project: push them apart.
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
                       const WorldSettings& world) {
+    // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
+    if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
 }
 
@@ -44,11 +46,9 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
         for (std::size_t j = i + 1; j < shapes.size(); ++j) {
             RigidShape& a = *shapes[i];
             RigidShape& b = *shapes[j];
-            // Nothing moves two static shapes, so they are not even tested.
-            if (a.isStatic() && b.isStatic()) continue;
             const std::optional<CollisionInfo> info = findCollision(a, b);
             if (!info) continue;
-            collisions_.push_back({i, j, *info});
+            collisions_.push_back({i, j, *info});  // two static shapes too: the borders' corners
             resolveCollision(a, b, *info, world);
         }
     }

@@ -15,9 +15,10 @@
 // only part of the overlap, so that shapes in a pile settle in small moves rather than
 // jumping back and forth.
 //
-// The book draws the collision info from inside the pass. Here the pass only records
-// what it found, and the core draws it after the shapes, so every frame shows what
-// the last relaxation pass still found.
+// The book draws the collision info from inside the pass, in every relaxation pass,
+// over the picture the frame has just drawn. Here the pass only records what it found,
+// and the core has what the last relaxation pass still found drawn over that picture
+// once the frame's updates are done (core.cpp).
 
 #include <cstddef>
 #include <memory>
@@ -49,7 +50,8 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
 class Physics {
 public:
     // world.relaxation_iterations passes, each testing every pair of shapes once and
-    // resolving each pair that collides; pairs of two static shapes are left out.
+    // resolving each pair that collides (a pair of two static shapes is tested too, as
+    // in the book; only its resolution leaves it as it is).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
 

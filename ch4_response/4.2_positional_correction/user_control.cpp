@@ -81,10 +81,15 @@ void UserControl::exciteAll() {
     for (std::size_t i = 0; i < core_.objectCount(); ++i) {
         RigidShape& shape = core_.object(i);
         if (shape.isStatic()) continue;
-        const double vx = random_.next() * 2 * kExciteSpeed - kExciteSpeed;
-        const double vy = random_.next() * 2 * kExciteSpeed - kExciteSpeed;
-        shape.setVelocity({vx, vy});
+        shape.setVelocity(randomVelocity(kExciteSpeed));
     }
+}
+
+// Each component uniform in [-largest, largest), x drawn first.
+Vec2 UserControl::randomVelocity(double largest_component) {
+    const double vx = random_.next() * 2 * largest_component - largest_component;
+    const double vy = random_.next() * 2 * largest_component - largest_component;
+    return {vx, vy};
 }
 
 // Drawn in the book's order: mass, friction, restitution. (A mass of exactly 0, and so
@@ -97,15 +102,17 @@ PhysicalAttributes UserControl::randomAttributes() {
     return attributes;
 }
 
+// The random numbers are drawn in the book's order: the size, then the attributes,
+// then the velocity, which the book sets once the shape is made.
 void UserControl::spawnRectangle(Vec2 center) {
     const double width = random_.next() * kSideRange + kSideMin;
     const double height = random_.next() * kSideRange + kSideMin;
-    core_.add(Rectangle(center, width, height, randomAttributes()));
+    core_.add(Rectangle(center, width, height, randomAttributes())).setVelocity(randomVelocity(kSpawnSpeed));
 }
 
 void UserControl::spawnCircle(Vec2 center) {
     const double radius = random_.next() * kRadiusRange + kRadiusMin;
-    core_.add(Circle(center, radius, randomAttributes()));
+    core_.add(Circle(center, radius, randomAttributes())).setVelocity(randomVelocity(kSpawnSpeed));
 }
 
 }  // namespace engine

@@ -16,19 +16,20 @@
 
 namespace {
 
-// Frame 0: movement on; shapes appear above the platform (6 to 9; the rectangle 8
-// above the circle 7) and to its right (10, 11), and are thrown down; the cursor, which
-// is static and collides like any shape, goes up out of their way. They land and stop:
-// the platform neither bounces (restitution 0) nor lets them slide far (friction 1);
-// rectangle 8 bounces off circle 7, and 10 and 11 off the bottom border, a little.
-// Circle 9 is also thrown to the right and slides off the platform's end. At frame 180
-// H gives every shape a random kick. Nothing turns: this project changes linear
-// velocities only.
+// Frame 0: movement on; shapes appear above the platform (object 1): 6 to 9, the
+// rectangle 8 above the circle 7, and to its right, 10 and 11. F/G throw each one at a
+// random velocity; K adds 150 px/s down to each, so that all of them go down. The
+// cursor, which is static and collides like any shape, goes up out of their way. On
+// the platform they stop dead (restitution 0) and slide to rest, slowed at about g
+// whatever the friction (the book's model): 6 and 7 within half a second; 8 runs into
+// 9 and sets it sliding, and 9 slides off the platform's end. 10 and 11 bounce off the
+// bottom and right borders, a little. At frame 180 H gives every shape a random kick.
+// Nothing turns: this project changes linear velocities only.
 const browser::StageDefaults kStage{
     .id = "s4_3",
     .title = "4.3 Collision Impulse: shapes land, bounce and rest",
     .keys = "comma a*30 s*10 f d*10 g w*6 f d*10 s*6 g d*25 f d*10 g "
-            "6 k*40 7 k*40 8 k*40 9 k*40 l*90 down k*60 down k*60 0 w*20 7 h@180",
+            "6 k*150 7 k*150 8 k*150 9 k*150 down k*150 down k*150 0 w*20 7 h@180",
     .frames = 300,
     .every = 30,
     .extra_options = {

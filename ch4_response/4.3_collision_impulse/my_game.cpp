@@ -15,11 +15,11 @@ void buildScene(Core& core) {
     const double width = core.width();
     const double height = core.height();
     core.add(Rectangle({width / 2, height / 2}, kCursorSize, kCursorSize, kStatic));
+    core.add(Rectangle({200, 400}, 400, 20, kGrippyDeadPlatform));
     core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kStatic));       // top
     core.add(Rectangle({width / 2, height}, width, kBorderThickness, kStatic));  // bottom
     core.add(Rectangle({0, height / 2}, kBorderThickness, height, kStatic));     // left
     core.add(Rectangle({width, height / 2}, kBorderThickness, height, kStatic)); // right
-    core.add(Rectangle({200, 400}, 400, 20, kGrippyDeadPlatform));
 }
 
 }  // namespace engine

@@ -19,9 +19,8 @@
 // changed, by an impulse along the normal (the bounce) and one along the tangent
 // (friction), so that shapes bounce, slow down and come to rest.
 //
-// The book draws the collision info from inside the pass. Here the pass only records
-// what it found, and the core draws it after the shapes, so every frame shows what
-// the last relaxation pass still found.
+// From 4.3 on the book's pass no longer draws the collision info. Ours still records
+// what the last relaxation pass found, for the tests to read.
 
 #include <cstddef>
 #include <memory>
@@ -29,7 +28,6 @@
 #include <span>
 #include <vector>
 
-#include "canvas.h"
 #include "collision_info.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
@@ -53,13 +51,10 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
 class Physics {
 public:
     // world.relaxation_iterations passes, each testing every pair of shapes once and
-    // resolving each pair that collides; pairs of two static shapes are left out.
+    // resolving each pair that collides (a pair of two static shapes is tested too, as
+    // in the book; only its resolution leaves it as it is).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
-
-    // Draws the collision info of every pair the last pass found: an orange line
-    // from start to end.
-    void drawCollisions(browser::Canvas& context) const;
 
 private:
     void relaxationPass(ShapeList shapes, const WorldSettings& world);

@@ -16,14 +16,19 @@
 
 namespace {
 
-// Frame 0: movement on; two shapes appear above the upper platform (7, 8) and two
-// above the steep one (9, 10), all thrown down; the cursor, static like the
-// platforms, goes up out of their way. They land, turn, roll and slide down the
-// slopes: the circles spin as they roll, and boxes tip over corners.
+// Frame 0: movement on; two shapes appear above the upper platform (object 1): 7 and
+// 8, and two above the steep one (object 2): 9 and 10. F/G throw each one at a random
+// velocity; K sends them all down, and J takes back most of the push to the right that
+// 9 and 10 got, so that they fall onto the steep platform. The cursor, static like the
+// platforms, goes up out of their way. Circle 7 rolls down the upper platform to the
+// left, spinning, and over its end; box 8 glances off it and drifts left above it.
+// Circle 9 lands on the steep platform and slides down it, spinning up, then rolls on
+// along the bottom; box 10 tips over as it lands and tumbles down the slope in one
+// long hop.
 const browser::StageDefaults kStage{
     .id = "s4_4",
     .title = "4.4 Angular Impulse: shapes turn, roll and tumble",
-    .keys = "comma d*20 w*10 g d*6 f a*50 g a*5 f 7 k*40 8 k*40 9 k*60 down k*60 0 w*10 9",
+    .keys = "comma d*20 w*10 g d*6 f a*50 g a*5 f 7 k*40 8 k*40 9 j*70 k*60 down j*80 k*60 0 w*10 9",
     .frames = 300,
     .every = 30,
     .extra_options = {

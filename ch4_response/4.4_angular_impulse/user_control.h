@@ -13,8 +13,8 @@
 //   comma        start / stop the motion of every shape
 //   M            turn positional correction on / off
 //   H            excite: give every non-static shape a random velocity
-//   F / G        create a rectangle / circle of random size and attributes at the
-//                selected object
+//   F / G        create a rectangle / circle of random size, attributes and velocity
+//                at the selected object
 //   R            reset: remove every object but the first kKeptOnReset
 
 #include <cstddef>
@@ -29,8 +29,10 @@ class UserControl {
 public:
     // The cursor, the four borders and the two platforms of my_game survive a reset.
     static constexpr std::size_t kKeptOnReset = 7;
-    // H kicks every moving shape: each velocity component uniform in [-10, 10) px/s.
-    static constexpr double kExciteSpeed = 10.0;
+    // H kicks every moving shape: each velocity component uniform in [-250, 250) px/s.
+    static constexpr double kExciteSpeed = 250.0;
+    // F/G: a new shape flies off, each velocity component uniform in [-150, 150) px/s.
+    static constexpr double kSpawnSpeed = 150.0;
 
     UserControl(Core& core, browser::Random& random) : core_(core), random_(random) {}
     void onKeyDown(browser::Key key);
@@ -41,6 +43,7 @@ private:
     void selectedObjectKeys(browser::Key key, RigidShape& selected);
     void exciteAll();
     PhysicalAttributes randomAttributes();
+    Vec2 randomVelocity(double largest_component);
     void spawnRectangle(Vec2 center);
     void spawnCircle(Vec2 center);
 

@@ -7,11 +7,6 @@
 namespace engine {
 
 namespace {
-// 1000/60 has no exact binary form: the book's step is a hair above 50/3 ms, so three
-// of them add up to a hair more than 50 ms. Without this slack a 50 ms frame would run two updates and
-// carry almost a whole step to the next frame. Far below a millisecond, it changes
-// nothing else.
-constexpr double kTimeSlackMs = 1e-9;
 constexpr double kMsPerSecond = 1000.0;
 
 // The book's echo prints numbers with toPrecision(3).
@@ -21,14 +16,27 @@ std::string echoVector(Vec2 v) {
     std::string text = echoNumber(v.x);
     return text.append(",").append(echoNumber(v.y));
 }
-std::string echoFlag(bool on) { return on ? "On" : "Off"; }
+// JavaScript prints a flag as true or false.
+std::string echoFlag(bool on) { return on ? "true" : "false"; }
+// The book prints `1 / invMass.toPrecision(3)`. toPrecision binds first and gives back
+// text, which the division reads as a number again: so the echo shows 1 over the
+// inverse mass *rounded to 3 digits*, printed with all the digits JavaScript prints by
+// default. Mass 7 shows as 1 / 0.143 = 6.993006993006993, mass 5 as 5, and a static
+// shape as 1 / 0 = Infinity (docs/errata.md).
+std::string echoMass(const RigidShape& shape) {
+    const double shown_inverse_mass = std::stod(echoNumber(shape.invMass()));
+    return browser::to_js_string(1.0 / shown_inverse_mass);
+}
 }  // namespace
 
+// As in the book, the lag is compared with the step exactly. 1000/60 ms has no exact
+// binary form: the step is a hair above 50/3, so three of them add up to a hair more
+// than 50 ms, and a 50 ms frame runs two updates and carries almost a whole step.
 int FixedStepTimer::updatesDue(double now_ms) {
     lag_ms_ += now_ms - previous_ms_;
     previous_ms_ = now_ms;
     int updates = 0;
-    while (lag_ms_ >= step_ms_ - kTimeSlackMs) {
+    while (lag_ms_ >= step_ms_) {
         lag_ms_ -= step_ms_;
         ++updates;
     }
@@ -50,10 +58,13 @@ void Core::keepFirstObjects(std::size_t count) {
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
+// The book's order (3.1 on): the frame shows the world as it stands, then runs the
+// updates that are due, so each picture shows the state from before that frame's
+// updates. From 4.3 on the book's pass no longer draws the collisions it finds.
 void Core::runGameLoop() {
-    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     updateUIEcho();
     draw();
+    for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.
@@ -91,7 +102,7 @@ void Core::updateUIEcho() {
         echo.append("  Angle: ").append(echoNumber(shape.angle())).append("\n");
         echo.append("  Velocity: ").append(echoVector(shape.velocity())).append("\n");
         echo.append("  Angular Velocity: ").append(echoNumber(shape.angularVelocity())).append("\n");
-        echo.append("  Mass: ").append(shape.isStatic() ? "0 (static)" : echoNumber(shape.mass())).append("\n");
+        echo.append("  Mass: ").append(echoMass(shape)).append("\n");
         echo.append("  Friction: ").append(echoNumber(shape.friction())).append("\n");
         echo.append("  Restitution: ").append(echoNumber(shape.restitution())).append("\n");
     } else {
@@ -123,7 +134,6 @@ void Core::draw() {
         context.setStrokeStyle(i == selected_ ? browser::colors::kRed : browser::colors::kBlue);
         all_objects_[i]->draw(context);
     }
-    physics_.drawCollisions(context);
 }
 
 }  // namespace engine

@@ -19,7 +19,6 @@ constexpr double kSpeedStep = 1.0;         // px/s per I/J/K/L press
 constexpr double kSpinStep = 0.1;          // rad/s per U/O press
 constexpr double kMassStep = 1.0;          // per Z/X press
 constexpr double kSurfaceStep = 0.01;      // friction per C/V, restitution per B/N press
-constexpr double kSpawnSpeed = 150.0;      // F/G: new shapes fly off at up to 150 px/s a component
 }  // namespace
 
 void UserControl::onKeyDown(browser::Key key) {
@@ -103,6 +102,8 @@ PhysicalAttributes UserControl::randomAttributes() {
     return attributes;
 }
 
+// The random numbers are drawn in the book's order: the size, then the attributes,
+// then the velocity, which the book sets once the shape is made.
 void UserControl::spawnRectangle(Vec2 center) {
     const double width = random_.next() * kSideRange + kSideMin;
     const double height = random_.next() * kSideRange + kSideMin;

@@ -13,8 +13,8 @@
 //   comma        start / stop the motion of every shape
 //   M            turn positional correction on / off
 //   H            excite: give every non-static shape a random velocity
-//   F / G        create a rectangle / circle of random size and attributes at the
-//                selected object
+//   F / G        create a rectangle / circle of random size, attributes and velocity
+//                at the selected object
 //   R            reset: remove every object but the first kKeptOnReset
 
 #include <cstddef>
@@ -33,6 +33,8 @@ public:
     static constexpr std::size_t kKeptOnReset = 7;
     // H kicks every moving shape: each velocity component uniform in [-250, 250) px/s.
     static constexpr double kExciteSpeed = 250.0;
+    // F/G: a new shape flies off, each velocity component uniform in [-150, 150) px/s.
+    static constexpr double kSpawnSpeed = 150.0;
 
     UserControl(Core& core, browser::Random& random) : core_(core), random_(random) {}
     void onKeyDown(browser::Key key);

@@ -9,7 +9,7 @@
 //   end     = start + normal * depth, where it ends, on the other shape's outline
 //
 // So the segment from start to end shows both the direction and the size of the
-// correction, and that is how it is drawn (an orange line).
+// correction, and that is how 3.2 to 4.2 draw it (an orange line).
 
 #include "vec2.h"
 

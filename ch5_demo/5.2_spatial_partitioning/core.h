@@ -77,7 +77,8 @@ public:
     // The M key: turns positional correction on and off.
     void togglePositionalCorrection() { settings_.positional_correction = !settings_.positional_correction; }
 
-    // One animation frame: every update that is due, then the echo and one drawing.
+    // One animation frame, in the book's order: the echo and the drawing of the world
+    // as it stands, then every update that is due.
     void runGameLoop();
     // One fixed step of the world: the collision pass, then every shape's motion; with
     // remove_out_of_bounds, every shape whose centre has left the canvas in this step

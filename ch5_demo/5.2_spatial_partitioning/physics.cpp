@@ -67,6 +67,8 @@ void applyImpulse(RigidShape& a, RigidShape& b, const LeverArms& arms, Vec2 impu
 // see docs/errata.md).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
                       const WorldSettings& world) {
+    // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
+    if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
 
     const Vec2 normal = info.normal();  // from a to b
@@ -128,25 +130,16 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
         for (std::size_t j = broad_phase.first(i); j < shapes.size(); j = broad_phase.next(i, j)) {
             RigidShape& a = *shapes[i];
             RigidShape& b = *shapes[j];
-            // Nothing moves two static shapes, so they are not even tested.
-            if (a.isStatic() && b.isStatic()) continue;
             if (!broad_phase.mayTouch(a, b)) continue;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) continue;
-            collisions_.push_back({i, j, *info});
+            // Nothing draws the record from 4.3 on: it keeps the pairs the resolution
+            // works on, for the tests, so two static shapes lying in each other are
+            // left out of it.
+            if (!(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
             resolveCollision(a, b, *info, world);
             broad_phase.moved(i, j);
         }
-    }
-}
-
-void Physics::drawCollisions(browser::Canvas& context) const {
-    context.setStrokeStyle(browser::colors::kOrange);
-    for (const Collision& pair : collisions_) {
-        context.beginPath();
-        context.moveTo(pair.info.start().x, pair.info.start().y);
-        context.lineTo(pair.info.end().x, pair.info.end().y);
-        context.stroke();
     }
 }
 

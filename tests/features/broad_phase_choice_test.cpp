@@ -247,7 +247,7 @@ TEST_CASE("broad phase choice: the grid gathers a row again when the pass pushes
 TEST_CASE("broad phase choice: the grid hands on far fewer pairs than testing them all, and loses none") {
     // 256 shapes, 8 to 14 px, one to every 20 px square of a lattice, drifting, no
     // gravity: each has a few neighbours. Every broad phase but the grid looks at every
-    // pair that is not two static shapes, in every pass: n (n - 1) / 2 of them.
+    // pair in every pass, as the book's loop does: n (n - 1) / 2 of them.
     constexpr int kSide = 16;
     constexpr int kCount = kSide * kSide;
     test::RandomShapes random(3);

@@ -10,6 +10,7 @@
 #include "circle.h"
 #include "my_game.h"
 #include "rectangle.h"
+#include "stage_fixture.h"
 #include "world_fixture.h"
 
 using browser::Key;
@@ -184,4 +185,20 @@ TEST_CASE("collision impulse: 10,000 steps of the book's scene with shapes every
         CHECK(std::isfinite(shape.angle()));
         CHECK(std::isfinite(shape.angularVelocity()));
     }
+}
+
+TEST_CASE("collision impulse: the frame no longer draws the collision info") {
+    // From 4.3 on the book's pass has its drawing call commented out: the shapes alone.
+    test::StageFixture page;
+    page.core.add(engine::Rectangle({700, 400}, 3, 3, {.mass = 0}));
+    page.core.add(engine::Circle({100, 100}, 20));
+    page.core.add(engine::Circle({130, 100}, 20));  // 10 px deep
+    page.frame();
+    REQUIRE_FALSE(page.core.physics().collisions().empty());
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    int orange = 0;
+    for (int y = 0; y < pixels.height; ++y) {
+        for (int x = 0; x < pixels.width; ++x) orange += pixels.at(x, y) == browser::colors::kOrange ? 1 : 0;
+    }
+    CHECK(orange == 0);
 }

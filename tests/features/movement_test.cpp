@@ -3,7 +3,9 @@
 // change them.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "circle.h"
@@ -219,7 +221,7 @@ TEST_CASE("movement: I J K L U O change the velocities; C V B N friction and res
 }
 
 TEST_CASE("movement: H gives every non-static object a random velocity of up to kExciteSpeed a component") {
-    constexpr double kKick = engine::UserControl::kExciteSpeed;  // 10 px/s in chapter 4, 250 in the demo
+    constexpr double kKick = engine::UserControl::kExciteSpeed;  // 10 px/s in 4.1, 250 from 4.2 on
     test::WorldFixture page(test::world(false));
     engine::Rectangle& wall = page.core.add(engine::Rectangle({0, 0}, 10, 100, {.mass = 0}));
     for (int i = 0; i < 20; ++i) page.core.add(engine::Circle({100.0 + 30 * i, 100}, 10));
@@ -236,11 +238,13 @@ TEST_CASE("movement: H gives every non-static object a random velocity of up to 
     CHECK(page.core.object(1).velocity() != page.core.object(2).velocity());
 }
 
-TEST_CASE("movement: F and G spawn with mass 0..30, friction and restitution 0..1") {
+TEST_CASE("movement: F and G spawn with mass 0..30, friction and restitution 0..1, velocity up to kSpawnSpeed") {
+    constexpr double kFling = engine::UserControl::kSpawnSpeed;  // 0 in 4.1 (at rest), 150 px/s from 4.2 on
     test::WorldFixture page(test::world(false));
     page.core.add(engine::Rectangle({400, 225}, 3, 3, {.mass = 0}));
     page.press(Key::Digit0);
     double heaviest = 0;
+    double fastest = 0;
     for (int i = 0; i < 50; ++i) {
         page.press(Key::F);
         page.press(Key::G);
@@ -253,7 +257,46 @@ TEST_CASE("movement: F and G spawn with mass 0..30, friction and restitution 0..
         CHECK(shape.friction() < 1);
         CHECK(shape.restitution() >= 0);
         CHECK(shape.restitution() < 1);
+        CHECK(std::abs(shape.velocity().x) <= kFling);
+        CHECK(std::abs(shape.velocity().y) <= kFling);
+        CHECK(shape.angularVelocity() == 0);
         heaviest = std::max(heaviest, shape.mass());
+        fastest = std::max({fastest, std::abs(shape.velocity().x), std::abs(shape.velocity().y)});
     }
     CHECK(heaviest > 20);  // 100 draws, none above 20: odds (2/3)^100
+    CHECK(fastest >= kFling / 2);  // 200 uniform draws, all below half: odds 2^-200
+}
+
+TEST_CASE("movement: F and G draw their random numbers in the book's order") {
+    // The book's constructor arguments in order (size, mass, friction, restitution),
+    // then, from 4.2 on, the velocity line that follows it: x, then y.
+    constexpr std::uint64_t kSeed = 7;
+    constexpr double kFling = engine::UserControl::kSpawnSpeed;
+    test::WorldFixture page(test::world(false), kSeed);
+    browser::Random book(kSeed);  // the same Math.random, drawn by hand
+    const auto nextVelocity = [&] {
+        if (kFling == 0) return Vec2{};
+        const double vx = book.next() * 2 * kFling - kFling;
+        const double vy = book.next() * 2 * kFling - kFling;
+        return Vec2{vx, vy};
+    };
+    page.core.add(engine::Rectangle({400, 225}, 3, 3, {.mass = 0}));
+    page.press(Key::F);
+    page.press(Key::G);
+    REQUIRE(page.core.objectCount() == 3);
+
+    const auto& box = dynamic_cast<const engine::Rectangle&>(page.core.object(1));
+    CHECK(box.width() == book.next() * 30 + 10);
+    CHECK(box.height() == book.next() * 30 + 10);
+    CHECK(box.mass() == Approx(book.next() * 30).epsilon(1e-12));
+    CHECK(box.friction() == book.next());
+    CHECK(box.restitution() == book.next());
+    CHECK(box.velocity() == nextVelocity());
+
+    const auto& ball = dynamic_cast<const engine::Circle&>(page.core.object(2));
+    CHECK(ball.radius() == book.next() * 10 + 20);
+    CHECK(ball.mass() == Approx(book.next() * 30).epsilon(1e-12));
+    CHECK(ball.friction() == book.next());
+    CHECK(ball.restitution() == book.next());
+    CHECK(ball.velocity() == nextVelocity());
 }

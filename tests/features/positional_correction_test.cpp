@@ -58,7 +58,7 @@ TEST_CASE("positional correction: two circles part by inverse mass, 80% of the o
     CHECK(page.core.physics().collisions()[0].info.depth() == Approx(5 * kLeftAfterOneStep / 0.2).margin(1e-12));
 }
 
-TEST_CASE("positional correction: a static shape does not move; two static shapes are not even tested") {
+TEST_CASE("positional correction: a static shape does not move, nor do two static shapes in each other") {
     test::WorldFixture page(test::world(false));
     engine::Rectangle& floor = page.core.add(engine::Rectangle({100, 110}, 200, 20, {.mass = 0}));
     engine::Rectangle& wall = page.core.add(engine::Rectangle({190, 100}, 20, 100, {.mass = 0}));
@@ -68,7 +68,13 @@ TEST_CASE("positional correction: a static shape does not move; two static shape
     CHECK(wall.center() == Vec2{190, 100});  // floor and wall overlap, and stay so
     CHECK(ball.center().x == 50);
     CHECK(ball.center().y == Approx(95 - 5 * (1 - kLeftAfterOneStep)).margin(1e-9));
-    for (const engine::Collision& pair : page.core.physics().collisions()) CHECK(pair.second == 2);
+    // The pass tests the floor and the wall like any pair, as the book's does; only the
+    // resolution leaves two static shapes alone. (4.2 records and draws their collision,
+    // later stages keep only the pairs the resolution works on.)
+    for (const engine::Collision& pair : page.core.physics().collisions()) {
+        const bool floor_and_wall = pair.first == 0 && pair.second == 1;
+        CHECK((floor_and_wall || pair.second == 2));
+    }
 }
 
 TEST_CASE("positional correction: M turns it off and on again") {

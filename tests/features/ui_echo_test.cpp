@@ -42,15 +42,38 @@ TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitu
     CHECK(shows(echo, "Center: 700,430\n"));
     CHECK(shows(echo, "Velocity: 12.5,-3.00\n"));
     CHECK(shows(echo, "Angular Velocity: 0.250\n"));
-    CHECK(shows(echo, "Mass: 2.50\n"));
+    CHECK(shows(echo, "Mass: 2.5\n"));  // 1 / 0.400
     CHECK(shows(echo, "Friction: 0.250\n"));
     CHECK(shows(echo, "Restitution: 0.750\n"));
-    CHECK(shows(echo, "Movement: Off\n"));
+    CHECK(shows(echo, "Movement: false\n"));
     page.press(Key::Comma);
     page.press(Key::Digit0);  // the cursor: static
     page.frame();
-    CHECK(shows(page.window.document.ui_echo, "Movement: On\n"));
-    CHECK(shows(page.window.document.ui_echo, "Mass: 0 (static)\n"));
+    CHECK(shows(page.window.document.ui_echo, "Movement: true\n"));
+    CHECK(shows(page.window.document.ui_echo, "Mass: Infinity\n"));  // 1 / 0.00
+}
+
+TEST_CASE("ui echo: the mass is 1 over the inverse mass rounded to 3 digits, as the book prints it") {
+    // The book's `1 / invMass.toPrecision(3)` divides 1 by the rounded text, and prints
+    // the quotient with JavaScript's default digits (docs/errata.md).
+    test::StageFixture page;
+    page.core.add(engine::Rectangle({100, 100}, 20, 20, {.mass = 0}));
+    const struct {
+        double mass;
+        const char* shown;
+    } cases[] = {
+        {7, "6.993006993006993"},  // 1 / 0.143
+        {5, "5"},                  // 1 / 0.200
+        {3, "3.003003003003003"},  // 1 / 0.333
+        {30, "30.030030030030026"},  // 1 / 0.0333
+        {0.5, "0.5"},              // 1 / 2.00
+    };
+    for (const auto& example : cases) {
+        page.core.add(engine::Circle({300, 300}, 10, {.mass = example.mass}));
+        page.core.select(page.core.objectCount() - 1);
+        page.frame();
+        CHECK(shows(page.window.document.ui_echo, std::string("Mass: ") + example.shown + "\n"));
+    }
 }
 
 TEST_CASE("ui echo: fits the panel, even with the longest numbers") {

@@ -50,3 +50,21 @@ TEST_CASE("s3_2: each collision is drawn as an orange line from start to end") {
     page.frame();
     CHECK(page.window.document.canvas.pixels().at(115, 100) == browser::colors::kWhite);
 }
+
+TEST_CASE("s3_2: a frame that runs no update draws no collision line") {
+    // As in the book, the lines come from the frame's own collision pass: a frame too
+    // short for a step (5 ms of 16.7) shows the shapes alone.
+    test::StageFixture page(1, 5.0);
+    page.core.add(engine::Rectangle({700, 400}, 3, 3));
+    page.core.add(engine::Circle({100.5, 100.5}, 20));
+    page.core.add(engine::Circle({130.5, 100.5}, 20));
+    const auto middle = [&] { return page.window.document.canvas.pixels().at(115, 100); };
+    for (int k = 0; k < 3; ++k) {  // 5, 10 and 15 ms: no step yet
+        page.frame();
+        CHECK(middle() == browser::colors::kWhite);
+    }
+    page.frame();  // 20 ms: one step, and its pass's line
+    CHECK(middle() == browser::colors::kOrange);
+    page.frame();  // 25 ms: no step
+    CHECK(middle() == browser::colors::kWhite);
+}

@@ -2,9 +2,12 @@
 // the book's scene is static.
 #include <catch2/catch.hpp>
 
+#include <string>
+
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
+#include "stage_fixture.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -37,4 +40,28 @@ TEST_CASE("s4_1: colliding shapes are reported and pass through each other untou
     CHECK(right.velocity() == Vec2{-60, 0});
     CHECK(left.center().x == Approx(130));
     CHECK(right.center().x == Approx(100));
+}
+
+TEST_CASE("s4_1: a frame shows the world from before its update, with that update's collision on top") {
+    // The book's order from 3.1 on: the frame echoes and draws first, then runs the due
+    // update, whose collision pass draws onto the picture already made.
+    test::StageFixture page;
+    page.core.toggleMovement();
+    // Pixel-centred circles, radii 20, 30 apart: 10 px deep. The right one, selected
+    // (red), moves 10 px right a step.
+    page.core.add(engine::Circle({100.5, 100.5}, 20, {.mass = 0}));
+    engine::Circle& ball = page.core.add(engine::Circle({130.5, 100.5}, 20));
+    ball.setVelocity({600, 0});
+    page.core.select(1);
+    page.frame();
+    REQUIRE(page.core.stepCount() == 1);
+    CHECK(ball.center().x == Approx(140.5));
+    // The echo and the outline are from before the update: the ball's rightmost point
+    // is still at x = 150.5, and gravity has not yet added to its velocity.
+    CHECK(page.window.document.ui_echo.find("Velocity: 600,0.00\n") != std::string::npos);
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    CHECK(pixels.at(150, 100) == browser::colors::kRed);
+    CHECK(pixels.at(160, 100) == browser::colors::kWhite);
+    // The pass ran before the ball moved: its line runs from 110.5 to 120.5.
+    CHECK(pixels.at(115, 100) == browser::colors::kOrange);
 }

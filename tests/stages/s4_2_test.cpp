@@ -1,12 +1,14 @@
 // Stage 4.2: colliding shapes are pushed apart, but their velocities are left alone;
-// the echo shows the positional-correction flag.
+// the echo shows the positional-correction flag; two static shapes are still tested.
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <utility>
 
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
+#include "physics.h"
 #include "stage_fixture.h"
 #include "world_fixture.h"
 
@@ -34,9 +36,30 @@ TEST_CASE("s4_2: the echo shows the positional correction flag and the M key") {
     test::StageFixture page;
     test::buildBookScene(page.core, page.random);
     page.frame();
-    CHECK(page.window.document.ui_echo.find("Positional Correction: On\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("Positional Correction: true\n") != std::string::npos);
     CHECK(page.window.document.ui_echo.find("M: Positional Correction") != std::string::npos);
     page.press(browser::Key::M);
     page.frame();
-    CHECK(page.window.document.ui_echo.find("Positional Correction: Off\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("Positional Correction: false\n") != std::string::npos);
+}
+
+TEST_CASE("s4_2: two static shapes are still tested, and their collision drawn: the borders' corners") {
+    // As in the book's 4.2, only the resolution leaves a pair of static shapes alone: the
+    // pass still finds the four corners where the borders overlap, 1.5 px deep, and the
+    // frame draws their collision info, over the borders' outlines.
+    test::StageFixture page;
+    test::buildBookScene(page.core, page.random);
+    page.frame();
+    const auto& found = page.core.physics().collisions();
+    REQUIRE(found.size() == 4);
+    const std::pair<std::size_t, std::size_t> corners[] = {{1, 3}, {1, 4}, {2, 3}, {2, 4}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        CHECK(found[k].first == corners[k].first);
+        CHECK(found[k].second == corners[k].second);
+        CHECK(found[k].info.depth() == Approx(1.5));
+    }
+    // At the bottom-left corner the line runs along the canvas's last rows but one.
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    CHECK(pixels.at(0, 448) == browser::colors::kOrange);
+    CHECK(pixels.at(1, 448) == browser::colors::kOrange);
 }

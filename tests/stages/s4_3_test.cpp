@@ -12,11 +12,14 @@
 using engine::Vec2;
 
 TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), kept by a reset") {
+    // The book's MyGame.js order: the cursor, the platform, then the four borders.
     test::WorldFixture page(test::world(true));
     test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == 6);
     REQUIRE(engine::UserControl::kKeptOnReset == 6);
-    test::checkPlatform(page.core.object(5), {.center = {200, 400}, .friction = 1, .restitution = 0});
+    CHECK(page.core.object(0).center() == Vec2{400, 225});
+    test::checkPlatform(page.core.object(1), {.center = {200, 400}, .friction = 1, .restitution = 0});
+    test::checkBorders(page.core, 2);
 }
 
 TEST_CASE("s4_3: a circle dropped on the platform comes to rest on it") {

@@ -12,12 +12,15 @@
 using engine::Vec2;
 
 TEST_CASE("s4_4: the scene has two turned static platforms, kept by a reset") {
+    // The book's MyGame.js order: the cursor, the two platforms, then the four borders.
     test::WorldFixture page(test::world(true));
     test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == 7);
     REQUIRE(engine::UserControl::kKeptOnReset == 7);
-    test::checkPlatform(page.core.object(5), {.center = {200, 400}, .angle = 0.785, .friction = 1, .restitution = 0});
-    test::checkPlatform(page.core.object(6), {.center = {500, 200}, .angle = 3.0});
+    CHECK(page.core.object(0).center() == Vec2{400, 225});
+    test::checkPlatform(page.core.object(1), {.center = {500, 200}, .angle = 3.0});
+    test::checkPlatform(page.core.object(2), {.center = {200, 400}, .angle = 0.785, .friction = 1, .restitution = 0});
+    test::checkBorders(page.core, 3);
 }
 
 TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it") {

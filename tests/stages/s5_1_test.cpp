@@ -136,6 +136,24 @@ TEST_CASE("s5_1: a shape moved off the canvas with movement off is removed at th
     CHECK(page.core.object(0).center() == Vec2{100, 100});
 }
 
+TEST_CASE("s5_1: when the selected shape is removed, object 0 is selected (the book's page stops)") {
+    // The book leaves gObjectNum pointing past the end of the list: its echo panel then
+    // throws on the missing object, and the page stops until a key selects a valid one.
+    test::WorldFixture page(engine::kBookWorld);
+    engine::Rectangle& ledge = page.core.add(engine::Rectangle({400, 300}, 100, 10, {.mass = 0}));
+    engine::Circle& leaving = page.core.add(engine::Circle({799.5, 100}, 5));
+    leaving.setVelocity({60, 0});
+    page.core.select(1);
+    page.steps(2);  // out of the canvas in the first step, removed in the second
+    REQUIRE(page.core.objectCount() == 1);
+    CHECK(page.core.selectedIndex() == 0);
+    page.core.runGameLoop();  // the page goes on: the echo shows the ledge
+    CHECK(page.window.document.ui_echo.find("Id: 0\n") != std::string::npos);
+    CHECK(page.window.document.ui_echo.find("Center: 400,300\n") != std::string::npos);
+    page.press(browser::Key::W);  // and the keys act on it
+    CHECK(ledge.center() == Vec2{400, 290});
+}
+
 TEST_CASE("s5_1: the same seed gives the same run, another seed another") {
     const test::ScratchFolder folder("s5_1_repeat");
     auto run = [&](const std::string& name, std::uint64_t seed) {
