@@ -2,10 +2,9 @@
 // The world's settings: the numbers the book keeps in its engine core (gEngine.Core:
 // mWidth, mHeight, mGravity, mUpdateIntervalInSeconds, mMovement) and, from 4.2, in its
 // physics (gEngine.Physics: mRelaxationCount, mPosCorrectionRate,
-// mPositionalCorrectionFlag), gathered in one value
-// so that the core, the physics and every shape read the same world, and a scene file
-// can change them (scene_io.h says which keys it reads). The book's own values are
-// written here, once.
+// mPositionalCorrectionFlag), gathered in one value so that the core, the physics and
+// every shape read the same world, and a scene file can change them (scene_io.h says
+// which keys it reads). The book's own values are written here, once.
 
 #include "vec2.h"
 
