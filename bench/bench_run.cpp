@@ -11,7 +11,7 @@
 #include "png_io.h"
 #include "report.h"
 #include "scene_maker.h"
-#include "scene_writer.h"
+#include "scene_json.h"
 #include "study.h"
 
 namespace bench {

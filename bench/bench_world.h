@@ -1,15 +1,13 @@
 #pragma once
-// A world the bench can step, time and look at: stage 5.1's engine, or Box2D as the
-// reference (box2d_world.h). The measures only ever see a Snapshot, so one measure
-// serves both engines.
+// A world the bench can step, time and look at: a chapter 5 stage's engine
+// (stage_engine.h) or Box2D as the reference (box2d_world.h). The measures only ever
+// see a Snapshot, so one measure serves every engine.
 
 #include <chrono>
-#include <memory>
 #include <optional>
 #include <vector>
 
 #include "collision_oracle.h"
-#include "scene_file.h"
 #include "vec2.h"
 
 namespace bench {
@@ -49,7 +47,7 @@ public:
     // Pairs looked at per fixed step, every relaxation pass counted, on average over
     // every step run (timed or not): those the broad phase considered (candidates) and
     // those that reached the exact narrow-phase test. Nothing where the engine does not
-    // say.
+    // count them (stage 5.1, the book's, and Box2D).
     struct PairCounts {
         double candidates = 0.0;
         double narrow_tests = 0.0;
@@ -63,8 +61,5 @@ private:
     long steps_ = 0;
     double seconds_ = 0.0;
 };
-
-// Stage 5.1's engine with the scene's world and bodies.
-std::unique_ptr<BenchWorld> engine_world(const browser::SceneDescription& scene);
 
 }  // namespace bench

@@ -34,7 +34,7 @@ double area_m2(const browser::BodyDescription& body) {
 
 class Box2dWorld final : public BenchWorld {
 public:
-    explicit Box2dWorld(const browser::SceneDescription& scene)
+    explicit Box2dWorld(const SceneDescription& scene)
         : world_(metres(scene.world.gravity)), dt_(static_cast<float>(scene.world.dt)), descriptions_(scene.bodies) {
         world_.SetContinuousPhysics(false);
         world_.SetAllowSleeping(false);
@@ -118,7 +118,7 @@ std::string box2d_version() {
     return name.append(std::to_string(b2_version.major)).append(".").append(std::to_string(b2_version.minor));
 }
 
-std::unique_ptr<BenchWorld> box2d_world(const browser::SceneDescription& scene) {
+std::unique_ptr<BenchWorld> box2d_world(const SceneDescription& scene) {
     return std::make_unique<Box2dWorld>(scene);
 }
 

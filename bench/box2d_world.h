@@ -4,9 +4,10 @@
 // as Box2D is tuned for bodies of 0.1 to 10 m; the snapshot is scaled back to px.
 // Box2D's boxes are rounded by a skin of b2_polygonRadius (0.3 px here) around a
 // smaller core, so that they are the scene's size where they touch; the measures see
-// them as plain boxes of the scene's size. Box2D runs as the bench's targets ask: continuous collision off (our engine has
-// none), 8 velocity and 3 position iterations per step; and with sleeping off, as a
-// body that sleeps costs nothing and ours never do. Friction and restitution are each
+// them as plain boxes of the scene's size. Box2D runs as the bench's targets ask:
+// continuous collision off (our engines have none), 8 velocity and 3 position
+// iterations per step; and with sleeping off, as a body that sleeps costs nothing and
+// ours never do. Friction and restitution are each
 // body's own; our scenes give every body of a pile the same ones, so Box2D's mixing
 // rules (sqrt(f1 f2), max(e1, e2)) and ours (min, min) agree.
 //
@@ -17,6 +18,7 @@
 #include <string_view>
 
 #include "bench_world.h"
+#include "scene_description.h"
 
 namespace bench {
 
@@ -30,6 +32,6 @@ bool box2d_available();
 std::string box2d_version();
 
 // Nothing in a build without Box2D.
-std::unique_ptr<BenchWorld> box2d_world(const browser::SceneDescription& scene);
+std::unique_ptr<BenchWorld> box2d_world(const SceneDescription& scene);
 
 }  // namespace bench

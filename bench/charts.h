@@ -1,7 +1,9 @@
 #pragma once
 // Charts of measurements, drawn with the project's own canvas and font and saved as PNG:
 // one scatter (or line) plot per picture, with labelled axes, optionally logarithmic,
-// a legend, and the Pareto front of a speed/accuracy trade-off marked.
+// a legend, and the Pareto front of a speed/accuracy trade-off marked. The parts that
+// draw it are the chart_*.h files (the look, text, axes, marks, legend, layout); the
+// numbers worked out from points, such as the front itself, are statistics.h's.
 
 #include <filesystem>
 #include <string>
@@ -35,18 +37,6 @@ struct Chart {
                                  // (lower is better on both) and join them
     std::vector<std::string> notes;  // extra lines printed under the title
 };
-
-// The points on the front when lower x and lower y are both better: a point is on it
-// unless another point is <= on both and < on one (so equal points are all on it).
-// Returned sorted by x, then y. A point with a NaN coordinate cannot be compared with
-// any other and is left out.
-std::vector<ChartPoint> pareto_front(const std::vector<ChartPoint>& points);
-
-// The exponent b of the power law y = a x^b that fits the points with x in
-// [x_min, x_max] best: the least-squares line log y = log a + b log x. Points whose x
-// or y is not a finite positive number have no logarithm and are left out. NaN when
-// fewer than two different x remain (no line is fixed by them).
-double fitted_exponent(const std::vector<ChartPoint>& points, double x_min, double x_max);
 
 // Draws the chart (kChartWidth x kChartHeight pixels) and writes it to `png`. A point
 // with a NaN or infinite coordinate, one <= 0 on a logarithmic axis, or one beyond 1e300

@@ -25,7 +25,7 @@ std::size_t first_moving(const Snapshot& bodies) {
 }
 
 Measure slide_distance() {
-    return [](BenchWorld& world, const browser::WorldSettings& settings) {
+    return [](BenchWorld& world, const WorldDescription& settings) {
         const Snapshot start = world.snapshot();
         const std::size_t box = first_moving(start);
         world.run(steps_for(kSlideSeconds, settings.dt));
@@ -39,7 +39,7 @@ Measure slide_distance() {
 }
 
 Measure roll_distance() {
-    return [](BenchWorld& world, const browser::WorldSettings& settings) {
+    return [](BenchWorld& world, const WorldDescription& settings) {
         const Snapshot start = world.snapshot();
         const std::size_t ball = first_moving(start);
         const long steps = steps_for(kRollSeconds, settings.dt);
@@ -75,15 +75,15 @@ StudyResult slide_study(const StudyContext& context) {
                   [](const Metrics& m) { return m.slide_error; }, 1e-4};
     plan.columns = {{"slide error", [](const Row& r) { return percent(r.metrics.slide_error); }}};
     StudyResult result = run_sweep(context, plan);
-    std::string key = "Sliding box against Coulomb's v²/(2 μ g):";
+    // The book's friction is the oldest stage's own; Coulomb's the row that asks for it.
+    std::string key = "Sliding box against Coulomb's v²/(2 μ g): the book's friction (stage " +
+                      stage_name(result.rows.front().stage) + ") " + percent(result.rows.front().metrics.slide_error);
     for (const Row& row : result.rows) {
-        if (row.varied.empty() || row.varied == "friction_model") {
-            key.append(" ").append(browser::knob_name(row.world.friction_model)).append(" friction ");
-            key.append(percent(row.metrics.slide_error)).append(";");
+        if (row.world.friction_model == FrictionModel::coulomb) {
+            key += ", Coulomb's (stage " + stage_name(row.stage) + ") " + percent(row.metrics.slide_error);
         }
     }
-    key.back() = '.';
-    result.key_figures.push_back(key);
+    result.key_figures.push_back(key + ".");
     return result;
 }
 

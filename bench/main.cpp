@@ -1,4 +1,4 @@
-// bench: what stage 5.1's speed/accuracy knobs cost and what they buy (README.md).
+// bench: what each chapter 5 stage's engine and knobs cost and buy (README.md).
 
 #include <iostream>
 

@@ -51,7 +51,7 @@ ParsedBenchCommandLine parse_bench_command_line(int argc, const char* const* arg
     bool quick = false;
     std::vector<std::string> only;
 
-    CLI::App app("bench: what stage 5.1's speed/accuracy knobs cost and buy", "bench");
+    CLI::App app("bench: what each chapter 5 stage's engine and knobs cost and buy", "bench");
     app.allow_extras();  // unknown words stay in app.remaining(), so we can name them
     app.add_option("--out", out_text, "folder for results.csv, results.md and the charts (replaced by each run)")
         ->type_name("DIR")->capture_default_str();

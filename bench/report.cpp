@@ -29,26 +29,34 @@ struct CsvColumn {
     std::function<std::string(const Row&)> value;
 };
 
-// The knobs apply to stage 5.1 only; Box2D's rows keep just the dt they share.
-std::string knob(const Row& row, const std::string& text) { return row.engine == EngineKind::box2d ? "" : text; }
+// A key's value as the row ran it, "" where its engine does not read the key (Box2D
+// has none of them but dt; 5.1 none beyond the book's).
+std::string whole(const std::optional<int>& value) { return value ? std::to_string(*value) : ""; }
+std::string on_off(const std::optional<bool>& value) { return value ? (*value ? "on" : "off") : ""; }
+template <class Choice>
+std::string chosen(const std::optional<Choice>& value) {
+    return value ? std::string(spelling(*value)) : "";
+}
+bool is_box2d(const Row& row) { return row.stage == Stage::box2d; }
 
 const std::vector<CsvColumn>& columns() {
     static const std::vector<CsvColumn> list{
         {"study", [](const Row& r) { return r.study; }},
         {"scene", [](const Row& r) { return r.scene; }},
-        {"engine", [](const Row& r) { return std::string(r.engine == EngineKind::box2d ? "box2d" : "5.1"); }},
+        {"stage", [](const Row& r) { return stage_name(r.stage); }},
         {"setting", [](const Row& r) { return r.setting; }},
         {"varied", [](const Row& r) { return r.varied; }},
         {"bodies", [](const Row& r) { return std::to_string(r.bodies); }},
         {"dt", [](const Row& r) { return number(r.world.dt); }},
-        {"substeps", [](const Row& r) { return knob(r, std::to_string(r.world.substeps)); }},
-        {"relaxation_iterations", [](const Row& r) { return knob(r, std::to_string(r.world.relaxation_iterations)); }},
-        {"broad_phase", [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.broad_phase))); }},
-        {"integrator", [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.integrator))); }},
-        {"friction_model",
-         [](const Row& r) { return knob(r, std::string(browser::knob_name(r.world.friction_model))); }},
-        {"rotation", [](const Row& r) { return knob(r, r.world.rotation ? "on" : "off"); }},
-        {"friction", [](const Row& r) { return knob(r, r.world.friction ? "on" : "off"); }},
+        {"relaxation_iterations",
+         [](const Row& r) { return is_box2d(r) ? "" : std::to_string(r.world.relaxation_iterations); }},
+        {"correction_rate", [](const Row& r) { return is_box2d(r) ? "" : number(r.world.correction_rate); }},
+        {"broad_phase", [](const Row& r) { return chosen(r.world.broad_phase); }},
+        {"substeps", [](const Row& r) { return whole(r.world.substeps); }},
+        {"integrator", [](const Row& r) { return chosen(r.world.integrator); }},
+        {"friction_model", [](const Row& r) { return chosen(r.world.friction_model); }},
+        {"rotation", [](const Row& r) { return on_off(r.world.rotation); }},
+        {"friction", [](const Row& r) { return on_off(r.world.friction); }},
         {"steps", [](const Row& r) { return std::to_string(r.steps); }},
         {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
         {"cost_us", [](const Row& r) { return number(r.cost_us); }},
@@ -94,13 +102,15 @@ std::string results_csv(const std::vector<Row>& rows) {
 }
 
 std::string results_markdown(const RunFacts& facts, const std::vector<StudyResult>& studies) {
-    std::string text = "# What the knobs cost and buy: stage 5.1's bench\n\n";
+    std::string text = "# What each stage's engine and knobs cost and buy: the bench\n\n";
     text += "Written by `bench`";
     text += facts.quick ? " **--quick** (short runs and few settings: a smoke test, not figures to quote)" : "";
     text += " in " + figure(facts.seconds) + " s on " + std::to_string(std::thread::hardware_concurrency()) +
             " cores; each cost is the median of " + std::to_string(facts.repeats) +
             (facts.repeats == 1 ? " timed run" : " timed runs") +
-            " per setting, each on a fresh world, errors from the first. Everything runs on one core, one "
+            " per setting, each on a fresh world, errors from the first. Every row names the engine that made it: "
+            "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs) or Box2D; a "
+            "setting runs on the oldest stage that can express it. Everything runs on one core, one "
             "setting after another. To keep the whole run within a few minutes, each scene runs only as long "
             "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "
             "10,000 steps, and the big scenes try fewer knobs. Costs are wall-clock times on a shared machine: "

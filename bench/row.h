@@ -1,13 +1,14 @@
 #pragma once
-// One line of the results: one scene run with one setting of the knobs, what it cost
-// and how far it strayed from the right answer. Every figure the bench reports is a
-// field here, and results.csv has a column for each.
+// One line of the results: one scene run by one stage's engine with one setting, what
+// it cost and how far it strayed from the right answer. Every figure the bench reports
+// is a field here, and results.csv has a column for each.
 
 #include <cstddef>
 #include <optional>
 #include <string>
 
-#include "scene_file.h"
+#include "scene_description.h"
+#include "stages.h"
 
 namespace bench {
 
@@ -24,21 +25,21 @@ struct Metrics {
     std::optional<double> ns_per_pair;       // ns per candidate pair per relaxation pass
 };
 
-enum class EngineKind { stage_5_1, box2d };
-
 struct Row {
     std::string study;    // what --only selects: "pyramid_10", "scale", ...
     std::string scene;    // the scene run: "pyramid_10", "scale_500", ...
-    EngineKind engine = EngineKind::stage_5_1;
-    std::string varied;   // the knob this row changes from the scene's own world, "" for none
+    Stage stage = Stage::s5_1;  // whose engine made the row
+    std::string varied;   // the key this row changes from the scene's own world, "" for none
     std::string setting;  // the setting in words: "passes 8", "dt 1/120", "grid", "scene"
-    browser::WorldSettings world;
+    // The world the row ran: for a stage, every key it reads written out (its defaults
+    // included, stages.h: resolved), keys it does not read unset; for Box2D, the scene's.
+    WorldDescription world;
     std::size_t bodies = 0;
     long steps = 0;        // fixed steps in each timed run
     double cost_us = 0.0;  // median over the repeats of the microseconds per fixed step
     int repeats = 0;       // how many timed runs cost_us is the median of (runner.h)
-    // Per fixed step, all passes together (5.1 only): the pairs the broad phase looked
-    // at, and those of them that reached the exact narrow-phase test.
+    // Per fixed step, all passes together (5.2 and 5.3, which count them): the pairs the
+    // broad phase looked at, and those of them that reached the exact narrow-phase test.
     std::optional<double> candidate_pairs;
     std::optional<double> narrow_tests;
     Metrics metrics;

@@ -19,7 +19,7 @@ struct Runs {
     int repeats = 0;                        // timed runs made
 };
 
-Runs run_repeats(const WorldMaker& make, const browser::WorldSettings& settings, int repeats,
+Runs run_repeats(const WorldMaker& make, const WorldDescription& settings, int repeats,
                  const Measure& measure) {
     if (repeats < 1) throw std::invalid_argument("run_repeats: repeats must be at least 1");
     Runs runs;
@@ -61,14 +61,15 @@ Row row_of(const RowSource& source, const Runs& runs) {
 
 }  // namespace
 
-Row engine_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure) {
-    browser::SceneDescription scene = source.scene;
+Row stage_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure) {
+    SceneDescription scene = source.scene;
     scene.world = setting.world;
-    const Runs runs = run_repeats([&] { return engine_world(scene); }, scene.world, repeats, measure);
+    const Runs runs = run_repeats([&] { return stage_world(setting.stage, scene); }, scene.world, repeats, measure);
     Row row = row_of(source, runs);
+    row.stage = setting.stage;
     row.varied = setting.varied;
     row.setting = setting.label;
-    row.world = setting.world;
+    row.world = resolved(setting.stage, setting.world);
     return row;
 }
 
@@ -76,7 +77,7 @@ std::optional<Row> box2d_row(const RowSource& source, int repeats, const Measure
     if (!box2d_available()) return std::nullopt;
     const Runs runs = run_repeats([&] { return box2d_world(source.scene); }, source.scene.world, repeats, measure);
     Row row = row_of(source, runs);
-    row.engine = EngineKind::box2d;
+    row.stage = Stage::box2d;
     row.setting = box2d_version();
     row.world = source.scene.world;
     return row;

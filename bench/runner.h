@@ -1,8 +1,8 @@
 #pragma once
-// Runs one scene with one setting and makes its row: the errors from the first run,
-// the cost as the median over `repeats` runs, each on a fresh world. The median, not
-// the mean: on a shared machine a run is sometimes slowed by something else, never
-// sped up, and the median ignores the odd slow run. A setting whose runs have taken
+// Runs one scene with one setting on one engine and makes its row: the errors from the
+// first run, the cost as the median over `repeats` runs, each on a fresh world. The
+// median, not the mean: on a shared machine a run is sometimes slowed by something
+// else, never sped up, and the median ignores the odd slow run. A setting whose runs have taken
 // kRepeatSeconds of timed work is not run again: its cost is then already an average
 // over many steps, and the whole bench must stay within minutes. The row says how many
 // runs its cost is the median of.
@@ -24,17 +24,17 @@ inline constexpr double kRepeatSeconds = 1.5;
 // What a scene measures: it runs the world (world.run(...) is the timed part) and
 // returns the errors it found. `settings` is the world the run has (its dt says how
 // many steps make a second). Every run of one setting does the same steps.
-using Measure = std::function<Metrics(BenchWorld& world, const browser::WorldSettings& settings)>;
+using Measure = std::function<Metrics(BenchWorld& world, const WorldDescription& settings)>;
 
 // Where a row comes from: the study, the scene's name and the scene itself.
 struct RowSource {
     std::string study;
     std::string scene_name;
-    const browser::SceneDescription& scene;
+    const SceneDescription& scene;
 };
 
-// Stage 5.1 with the setting's world in place of the scene's.
-Row engine_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure);
+// The setting's stage with the setting's world in place of the scene's.
+Row stage_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure);
 // Box2D with the scene's world; nothing in a build without Box2D.
 std::optional<Row> box2d_row(const RowSource& source, int repeats, const Measure& measure);
 

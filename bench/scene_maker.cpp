@@ -4,36 +4,31 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 
-#include "core.h"
 #include "random.h"
+#include "stages.h"
 
 namespace bench::scenes {
 namespace {
 
 using browser::BodyDescription;
-using browser::SceneDescription;
 using browser::ShapeKind;
-using browser::Vec2;
 
 // Each scene has its own seed, so changing one scene never changes another.
 constexpr std::uint64_t kRainSeed = 101;
 constexpr std::uint64_t kGasSeed = 102;
 constexpr std::uint64_t kScaleSeed = 103;
 
-constexpr double kBookGravity = engine::kGravity.y;
-// From this many shapes on, a scene uses the grid broad phase. It finds the same pairs
-// in the same order as the book's, so the world moves exactly as with the book's; only
-// the time differs, and testing every pair of 200 shapes takes most of a step.
-constexpr int kGridFrom = 200;
 constexpr double kWall = 20.0;    // px: thickness of floors and walls
 constexpr double kMargin = 20.0;  // px: free canvas around a box
 
-browser::WorldSettings world_of(double width, double height, double gravity) {
-    browser::WorldSettings world = engine::kBookWorld;
+// The book's world at this size, keeping every body; gravity as the book's unless given.
+WorldDescription world_of(double width, double height, std::optional<double> gravity = std::nullopt) {
+    WorldDescription world = book_world();
     world.width = width;
     world.height = height;
-    world.gravity = {0.0, gravity};
+    if (gravity) world.gravity = {0.0, *gravity};
     world.remove_out_of_bounds = false;
     return world;
 }
@@ -94,9 +89,7 @@ SceneDescription pyramid(int rows) {
     constexpr double kRowPitch = kSide + 0.25;      // 0.25 px above the support
     const double base_width = rows * kPitch;
     SceneDescription scene;
-    scene.world = world_of(std::max(800.0, base_width + 300.0), std::max(450.0, rows * kRowPitch + 150.0),
-                           kBookGravity);
-    if (rows * (rows + 1) / 2 >= kGridFrom) scene.world.broad_phase = browser::BroadPhase::grid;
+    scene.world = world_of(std::max(800.0, base_width + 300.0), std::max(450.0, rows * kRowPitch + 150.0));
     const double floor_top = scene.world.height - 40.0;
     const double middle = scene.world.width / 2;
     scene.bodies.push_back(fixed_box({middle, floor_top + kWall / 2}, base_width + 200.0, kWall, 0.8, 0.0));
@@ -122,7 +115,6 @@ SceneDescription rain(int shapes) {
     SceneDescription scene;
     scene.world = world_of(columns * kPitch + 2 * (kWall + kMargin), rows * kPitch + kDrop + kWall + 2 * kMargin + 40.0,
                            100.0);
-    if (shapes >= kGridFrom) scene.world.broad_phase = browser::BroadPhase::grid;
     add_walls(scene, false, 0.8, 0.2);
 
     browser::Random random(kRainSeed);
@@ -144,8 +136,6 @@ SceneDescription gas() {
     constexpr double kSpeed = 150.0;
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0, 0.0);
-    // 10,000 steps of 64 shapes: the grid saves most of the time, and changes nothing else.
-    scene.world.broad_phase = browser::BroadPhase::grid;
     add_walls(scene, true, 0.0, 1.0);
 
     browser::Random random(kGasSeed);
@@ -230,7 +220,7 @@ SceneDescription scale(int shapes) {
 
 SceneDescription pair(PairKind kind) {
     SceneDescription scene;
-    scene.world = world_of(800.0, 450.0, kBookGravity);
+    scene.world = world_of(800.0, 450.0);
     constexpr double kTop = 290.0;  // the top of the static shape
     if (kind == PairKind::circle_circle) {
         scene.bodies.push_back({.shape = ShapeKind::circle, .center = {400.0, kTop + 40.0}, .radius = 40.0,

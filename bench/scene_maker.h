@@ -5,51 +5,51 @@
 // JSON files in bench/scenes/, which the bench then reads like any scene file; the
 // scale and pair scenes are only made in memory.
 //
-// Units are the book's (px, s, rad, +y down). Every world starts from the book's
-// (engine::kBookWorld) with remove_out_of_bounds off, so no run loses bodies; scenes
-// of 200 shapes or more use the grid broad phase, which finds the same pairs in the
-// same order as the book's and only takes less time.
+// Units are the book's (px, s, rad, +y down). Every world is the book's (stage 5.1's
+// kBookWorld, stages.h: book_world) with its own size and gravity and
+// remove_out_of_bounds off, so no run loses bodies. Only the book's world keys are set,
+// so every chapter 5 stage reads the scenes; each study chooses the stages it runs.
 
 #include <string>
 #include <vector>
 
-#include "scene_file.h"
+#include "scene_description.h"
 
 namespace bench::scenes {
 
 // A pyramid of boxes (30 px, restitution 0) on a static floor: `rows` boxes at the
 // bottom, one at the top, 1 px apart and 0.25 px above their support. Gravity 20.
-browser::SceneDescription pyramid(int rows);
+SceneDescription pyramid(int rows);
 
 // `shapes` boxes (sides 10 to 16 px) and discs (10 to 18 px across) raining into an
 // open box from a jittered lattice just above its floor; mass in proportion to area. Gravity
 // 100, so the pile settles within a few seconds.
-browser::SceneDescription rain(int shapes);
+SceneDescription rain(int shapes);
 
 // 60 discs at 150 px/s in a closed box, restitution 1, friction 0, no gravity: a gas
-// whose kinetic energy must stay what it was. Grid broad phase.
-browser::SceneDescription gas();
+// whose kinetic energy must stay what it was.
+SceneDescription gas();
 
 // One disc thrown at (150, -150) px/s under gravity 100, with nothing to hit.
-browser::SceneDescription projectile();
+SceneDescription projectile();
 inline constexpr double kProjectileGravity = 100.0;
 
 // A 40 x 20 box sliding at 200 px/s on a static floor, friction 0.5 on both, gravity
 // 100: Coulomb's law stops it after v^2 / (2 mu g) = 400 px.
-browser::SceneDescription slide();
+SceneDescription slide();
 inline constexpr double kSlideSpeed = 200.0;
 inline constexpr double kSlideFriction = 0.5;
 inline constexpr double kSlideGravity = 100.0;
 
 // A disc (radius 20, friction 0.8) at rest on a static slope of 0.5 rad, gravity 100:
 // rolling without slipping, it runs down at 2/3 g sin(angle).
-browser::SceneDescription slope();
+SceneDescription slope();
 inline constexpr double kSlopeAngle = 0.5;
 inline constexpr double kSlopeGravity = 100.0;
 
 // A disc (radius 5) 1 px in front of a static wall 4 px thick, flying at it at
 // 1500 px/s, no gravity, friction 0.
-browser::SceneDescription thin_wall();
+SceneDescription thin_wall();
 inline constexpr double kWallBallRadius = 5.0;
 inline constexpr double kWallThickness = 4.0;
 inline constexpr double kWallGap = 1.0;
@@ -58,16 +58,16 @@ inline constexpr double kWallGap = 1.0;
 // to 20 px/s with no gravity: the same density, and so about the same contacts per
 // shape, whatever the count, for as long as the drift is short against the lattice
 // (the scale study runs 11 steps: at most 4 px).
-browser::SceneDescription scale(int shapes);
+SceneDescription scale(int shapes);
 
 // One pair of one kind in resting contact (restitution 0, gravity 20): a box on a
 // static box, a disc on a static box, a disc balanced on top of a static disc.
 enum class PairKind { rect_rect, rect_circle, circle_circle };
-browser::SceneDescription pair(PairKind kind);
+SceneDescription pair(PairKind kind);
 
 struct NamedScene {
     std::string name;  // the file name without ".json"
-    browser::SceneDescription scene;
+    SceneDescription scene;
 };
 // The scenes shipped in bench/scenes/.
 std::vector<NamedScene> shipped();

@@ -24,7 +24,7 @@ constexpr double kQuickSettleSeconds = 0.1;
 constexpr double kVisiblePx = 1.0;
 
 Measure stacking(double settle, double seconds) {
-    return [settle, seconds](BenchWorld& world, const browser::WorldSettings& settings) {
+    return [settle, seconds](BenchWorld& world, const WorldDescription& settings) {
         world.run_untimed(steps_for(settle, settings.dt));
         const Snapshot before = world.snapshot();
         const std::size_t top = top_body(before);
@@ -39,23 +39,31 @@ Measure stacking(double settle, double seconds) {
     };
 }
 
-// The cheapest of all the settings that keep the top within a pixel, if any does.
+// The cheapest of all the stages' rows that keep the top within a pixel, if any does.
 const Row* cheapest_steady(const std::vector<Row>& results) {
     const Row* best = nullptr;
     for (const Row& row : results) {
-        const bool steady = row.engine == EngineKind::stage_5_1 && row.metrics.top_drift &&
-                            *row.metrics.top_drift < kVisiblePx;
+        const bool steady = row.stage != Stage::box2d && row.metrics.top_drift && *row.metrics.top_drift < kVisiblePx;
         if (steady && (!best || row.ms_per_simulated_second() < best->ms_per_simulated_second())) best = &row;
     }
     return best;
 }
 
-// The rows that vary the passes (the scene's own 15 among them), fewest passes first.
+// The stage the passes were varied on: the oldest of the study's.
+Stage passes_stage(const std::vector<Row>& results) {
+    for (const Row& row : results) {
+        if (row.varied == "relaxation_iterations") return row.stage;
+    }
+    return results.front().stage;
+}
+
+// The rows of that stage that vary the passes (its scene row's 15 among them), fewest
+// passes first.
 std::vector<const Row*> pass_rows(const std::vector<Row>& results) {
+    const Stage stage = passes_stage(results);
     std::vector<const Row*> rows;
     for (const Row& row : results) {
-        const bool passes = row.engine == EngineKind::stage_5_1 &&
-                            (row.varied == "relaxation_iterations" || row.varied.empty());
+        const bool passes = row.stage == stage && (row.varied == "relaxation_iterations" || row.varied.empty());
         if (passes && row.metrics.top_drift) rows.push_back(&row);
     }
     std::sort(rows.begin(), rows.end(), [](const Row* a, const Row* b) {
@@ -74,20 +82,21 @@ std::string passes_give(const Row& row) {
 // pixel, and the cheapest setting of all that does.
 void add_advice(int rows, StudyResult& result) {
     const std::vector<const Row*> by_passes = pass_rows(result.rows);
-    std::string text = "Relaxation passes for " + std::to_string(rows) + " rows: ";
+    const std::string on_stage = " (stage " + stage_name(passes_stage(result.rows)) + ")";
+    std::string text = "Relaxation passes for " + std::to_string(rows) + " rows" + on_stage + ": ";
     const Row* enough = nullptr;
     for (const Row* row : by_passes) {
         text += (row == by_passes.front() ? "" : "; ") + passes_give(*row);
         if (!enough && *row->metrics.top_drift < kVisiblePx) enough = row;
     }
-    std::string advice = "for " + std::to_string(rows) + " rows, ";
+    std::string advice = "for " + std::to_string(rows) + " rows" + on_stage + ", ";
     if (enough) {
         advice += passes_give(*enough) + ", the fewest passes that keep the top within " + figure(kVisiblePx) + " px";
     } else {
         advice += "no pass count tried keeps the top within " + figure(kVisiblePx) + " px";
     }
     if (const Row* best = cheapest_steady(result.rows)) {
-        advice += "; the cheapest setting of all that does is *" + best->setting + "* (" +
+        advice += "; the cheapest row of all that does is *" + stage_name(best->stage) + " " + best->setting + "* (" +
                   figure(*best->metrics.top_drift) + " px, " + figure(best->ms_per_simulated_second()) +
                   " ms per simulated second)";
     }
@@ -108,14 +117,16 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
                     figure(settle) + " s to close the gaps and then " + figure(seconds) +
                     " s more. *Top moved* is how far the top box's centre moved in those " + figure(seconds) +
                     " s (it should stay put); *overlap* is the deepest and the mean overlap of two "
-                    "shapes at the end, measured by the collision oracle (tests/support/collision_oracle.h), "
+                    "shapes at the end, measured by the collision oracle (oracle/collision_oracle.h), "
                     "not by the engine.";
     // The big pyramid costs five times as much a step: all the pass counts, one other
     // value of each other knob, and no broad phases (the scale study compares those).
-    const Range range = rows <= 10 ? Range::all : Range::one;
-    plan.knobs = {{Knob::relaxation_iterations}, {Knob::dt, range},         {Knob::substeps, range},
-                  {Knob::integrator},            {Knob::friction_model},    {Knob::rotation}};
-    if (rows <= 10) plan.knobs.push_back({Knob::broad_phase});
+    const bool small = rows <= 10;
+    const Range range = small ? Range::all : Range::one;
+    plan.knobs = {{Knob::relaxation_iterations}, {Knob::correction_rate, range}, {Knob::dt, range},
+                  {Knob::substeps, range},       {Knob::integrator},             {Knob::friction_model},
+                  {Knob::rotation}};
+    if (small) plan.knobs.push_back({Knob::broad_phase});
     plan.measure = stacking(settle, seconds);
     plan.box2d = true;
     plan.error = {"top box moved (px)", [](const Metrics& m) { return m.top_drift; }, 1e-3};

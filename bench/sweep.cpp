@@ -2,62 +2,67 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "markdown.h"
 
 namespace bench {
 namespace {
 
-using browser::WorldSettings;
-
 struct Variant {
     std::string label;
-    WorldSettings world;
+    WorldDescription world;
 };
 
-std::vector<Variant> variants(const WorldSettings& base, Knob knob) {
+std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
     std::vector<Variant> list;
     const auto add = [&](std::string label, auto change) {
-        WorldSettings world = base;
+        WorldDescription world = base;
         change(world);
         list.push_back({std::move(label), world});
     };
+    using W = WorldDescription;
     switch (knob) {
         case Knob::relaxation_iterations:
             for (int passes : {1, 2, 4, 8, 15, 30}) {
-                add("passes " + std::to_string(passes), [=](WorldSettings& w) { w.relaxation_iterations = passes; });
+                add("passes " + std::to_string(passes), [=](W& w) { w.relaxation_iterations = passes; });
+            }
+            break;
+        case Knob::correction_rate:
+            for (double rate : {0.2, 0.4, 0.6, 0.8, 1.0}) {
+                add("correction " + figure(rate, 1), [=](W& w) { w.correction_rate = rate; });
             }
             break;
         case Knob::dt:
             for (int per_second : {30, 60, 120, 240}) {
-                add(dt_label(1.0 / per_second), [=](WorldSettings& w) { w.dt = 1.0 / per_second; });
+                add(dt_label(1.0 / per_second), [=](W& w) { w.dt = 1.0 / per_second; });
+            }
+            break;
+        case Knob::broad_phase:
+            for (BroadPhase phase : {BroadPhase::bounding_circle, BroadPhase::all_pairs, BroadPhase::grid}) {
+                add(std::string(spelling(phase)), [=](W& w) { w.broad_phase = phase; });
             }
             break;
         case Knob::substeps:
             for (int substeps : {1, 2, 4, 8}) {
-                add("substeps " + std::to_string(substeps), [=](WorldSettings& w) { w.substeps = substeps; });
-            }
-            break;
-        case Knob::broad_phase:
-            for (auto phase : {browser::BroadPhase::bounding_circle, browser::BroadPhase::all_pairs,
-                               browser::BroadPhase::grid}) {
-                add(std::string(browser::knob_name(phase)), [=](WorldSettings& w) { w.broad_phase = phase; });
+                add("substeps " + std::to_string(substeps), [=](W& w) { w.substeps = substeps; });
             }
             break;
         case Knob::integrator:
-            for (auto integrator : {browser::Integrator::symplectic, browser::Integrator::explicit_euler}) {
-                add(std::string(browser::knob_name(integrator)), [=](WorldSettings& w) { w.integrator = integrator; });
+            for (Integrator integrator : {Integrator::symplectic, Integrator::explicit_euler}) {
+                add(std::string(spelling(integrator)), [=](W& w) { w.integrator = integrator; });
             }
             break;
         case Knob::friction_model:
-            for (auto model : {browser::FrictionModel::book, browser::FrictionModel::coulomb}) {
-                add("friction " + std::string(browser::knob_name(model)),
-                    [=](WorldSettings& w) { w.friction_model = model; });
+            for (FrictionModel model : {FrictionModel::book, FrictionModel::coulomb}) {
+                add("friction " + std::string(spelling(model)), [=](W& w) { w.friction_model = model; });
             }
             break;
         case Knob::rotation:
-            add("rotation off", [](WorldSettings& w) { w.rotation = false; });
+            add("rotation off", [](W& w) { w.rotation = false; });
             break;
         case Knob::friction:
-            add("friction off", [](WorldSettings& w) { w.friction = false; });
+            add("friction off", [](W& w) { w.friction = false; });
             break;
     }
     return list;
@@ -66,9 +71,10 @@ std::vector<Variant> variants(const WorldSettings& base, Knob knob) {
 std::string knob_key(Knob knob) {
     switch (knob) {
         case Knob::relaxation_iterations: return "relaxation_iterations";
+        case Knob::correction_rate: return "correction_rate";
         case Knob::dt: return "dt";
-        case Knob::substeps: return "substeps";
         case Knob::broad_phase: return "broad_phase";
+        case Knob::substeps: return "substeps";
         case Knob::integrator: return "integrator";
         case Knob::friction_model: return "friction_model";
         case Knob::rotation: return "rotation";
@@ -77,27 +83,50 @@ std::string knob_key(Knob knob) {
     return "";
 }
 
-// One value besides the scene's: the first on the knob's list that differs from it, the
-// cheapest (but for substeps, where it is 2).
-std::vector<Variant> one_variant(const WorldSettings& base, std::vector<Variant> all) {
-    std::erase_if(all, [&](const Variant& v) { return v.world == base; });
-    if (all.size() > 1) all.resize(1);
-    return all;
-}
+// Settings in the order they are listed, each with its world as its stage reads it, so
+// that two settings the stage reads alike compare equal.
+class SettingList {
+public:
+    // False, and nothing added, when the stage reads the world as a setting already listed.
+    bool add(Setting setting) {
+        WorldDescription as_read = resolved(setting.stage, setting.world);
+        for (std::size_t i = 0; i < settings_.size(); ++i) {
+            if (settings_[i].stage == setting.stage && as_read_[i] == as_read) return false;
+        }
+        settings_.push_back(std::move(setting));
+        as_read_.push_back(std::move(as_read));
+        return true;
+    }
+    std::vector<Setting> settings() && { return std::move(settings_); }
+
+private:
+    std::vector<Setting> settings_;
+    std::vector<WorldDescription> as_read_;
+};
 
 }  // namespace
 
-std::vector<Setting> one_at_a_time(const WorldSettings& base, const std::vector<Sweep>& sweeps, bool quick) {
-    std::vector<Setting> settings{{"", "scene", base}};
+std::vector<Setting> one_at_a_time(const WorldDescription& base, const std::vector<Stage>& stages,
+                                   const std::vector<Sweep>& sweeps, bool quick) {
+    SettingList list;
+    for (Stage stage : stages) list.add({stage, "", "scene", base});
     for (const Sweep& sweep : sweeps) {
-        std::vector<Variant> list = variants(base, sweep.knob);
-        if (quick || sweep.range == Range::one) list = one_variant(base, std::move(list));
-        for (Variant& variant : list) {
-            const bool seen = std::any_of(settings.begin(), settings.end(),
-                                          [&](const Setting& s) { return s.world == variant.world; });
-            if (!seen) settings.push_back({knob_key(sweep.knob), std::move(variant.label), variant.world});
+        const bool one = quick || sweep.range == Range::one;
+        for (Variant& variant : variants(base, sweep.knob)) {
+            const std::optional<Stage> stage = oldest_expressing(stages, variant.world);
+            if (!stage) continue;
+            const bool added = list.add({*stage, knob_key(sweep.knob), std::move(variant.label), variant.world});
+            if (added && one) break;
         }
     }
+    // The scene on each stage first, then each stage's knobs, the stages in the order given.
+    std::vector<Setting> settings = std::move(list).settings();
+    const auto place = [&](const Setting& setting) {
+        const auto stage = std::find(stages.begin(), stages.end(), setting.stage) - stages.begin();
+        return std::pair{!setting.varied.empty(), stage};
+    };
+    std::stable_sort(settings.begin(), settings.end(),
+                     [&](const Setting& a, const Setting& b) { return place(a) < place(b); });
     return settings;
 }
 
@@ -107,6 +136,13 @@ std::string dt_label(double dt) {
         return "dt 1/" + std::to_string(static_cast<long>(std::round(per_second)));
     }
     return "dt " + std::to_string(dt);
+}
+
+std::string knob_title(const std::string& key) {
+    if (key == "relaxation_iterations") return "passes";
+    std::string title = key;
+    std::replace(title.begin(), title.end(), '_', ' ');
+    return title;
 }
 
 }  // namespace bench

@@ -1,23 +1,37 @@
 #pragma once
-// The settings a scene is run with: its own world first, then the knobs changed one
-// at a time from it, each over its range:
-//   relaxation_iterations {1, 2, 4, 8, 15, 30}   dt {1/30, 1/60, 1/120, 1/240}
-//   substeps {1, 2, 4, 8}   each broad phase, integrator and friction model
-//   rotation off, friction off
-// One at a time, so each row says what that one knob does; a setting equal to one
-// already listed (the scene's own value of a knob) is not run twice.
+// The settings a scene is run with: its own world on each stage of the study, then the
+// knobs changed one at a time from it, each over its range:
+//   relaxation_iterations {1, 2, 4, 8, 15, 30}   correction_rate {0.2, 0.4, 0.6, 0.8, 1}
+//   dt {1/30, 1/60, 1/120, 1/240}   broad_phase: each   substeps {1, 2, 4, 8}
+//   integrator: each   friction_model: each   rotation off   friction off
+// One at a time, so each row says what that one knob does. Each setting runs on the
+// oldest stage of the study that can express it (stages.h): passes, correction and dt
+// on the book's 5.1, the broad phase on 5.2, the rest on 5.3; a setting no stage of the
+// study can express is not run. A setting its stage reads as one already listed for
+// that stage (the stage's own default, say) is not run twice.
 
 #include <string>
 #include <vector>
 
-#include "scene_file.h"
+#include "scene_description.h"
+#include "stages.h"
 
 namespace bench {
 
-enum class Knob { relaxation_iterations, dt, substeps, broad_phase, integrator, friction_model, rotation, friction };
+enum class Knob {
+    relaxation_iterations,
+    correction_rate,
+    dt,
+    broad_phase,
+    substeps,
+    integrator,
+    friction_model,
+    rotation,
+    friction
+};
 
-// How many of a knob's values to try: all of them, or only the first that differs from
-// the scene's (passes 1, dt 1/30, substeps 2, ...), where a scene is too big to try all.
+// How many of a knob's values to try: all of them, or only the first that makes a new
+// setting (passes 1, dt 1/30, substeps 2, ...), where a scene is too big to try all.
 enum class Range { all, one };
 struct Sweep {
     Knob knob;
@@ -25,15 +39,21 @@ struct Sweep {
 };
 
 struct Setting {
-    std::string varied;  // the knob's name as in scene files, "" for the scene's own world
+    Stage stage = Stage::s5_1;
+    std::string varied;  // the knob's key in scene files, "" for the scene's own world
     std::string label;   // for tables and charts: "passes 8", "dt 1/120", "grid", "scene"
-    browser::WorldSettings world;
+    WorldDescription world;  // as handed to the stage: keys it leaves unset are the stage's default
 };
 
-// With `quick`, every knob takes one value besides the scene's.
-std::vector<Setting> one_at_a_time(const browser::WorldSettings& base, const std::vector<Sweep>& sweeps, bool quick);
+// The scene's own world on each stage first, then the knobs' settings, stage by stage.
+// With `quick`, every knob takes one value besides the scene's. `stages` oldest first.
+std::vector<Setting> one_at_a_time(const WorldDescription& base, const std::vector<Stage>& stages,
+                                   const std::vector<Sweep>& sweeps, bool quick);
 
 // "dt 1/120" for 1/120 s: steps are best read as steps per second.
 std::string dt_label(double dt);
+
+// A knob's key as a legend says it: "passes" for relaxation_iterations, "broad phase".
+std::string knob_title(const std::string& key);
 
 }  // namespace bench

@@ -1,9 +1,11 @@
 #pragma once
-// The common shape of the accuracy studies: one scene file, run with its own world
-// and with each knob changed in turn (sweep.h), plus Box2D where it applies; a table
-// of cost and error per setting, and a chart of error against cost with the Pareto
-// front marked: the settings no other setting beats on both.
+// The common shape of the accuracy studies: one scene file, run with its own world on
+// each stage of the study and with each knob changed in turn on the oldest stage that
+// has it (sweep.h), plus Box2D where it applies; a table of cost and error per row, and
+// a chart of error against cost with the Pareto front marked: the rows no other row
+// beats on both.
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -36,6 +38,8 @@ struct SweepPlan {
     std::string study;     // also the scene file's name in bench/scenes/
     std::string heading;   // of the results.md section
     std::string question;  // a paragraph under the heading: what is measured, and how
+    // Oldest first; none given, stages_for the scene's size.
+    std::vector<Stage> stages;
     std::vector<Sweep> knobs;
     Measure measure;
     bool box2d = false;  // add Box2D's row
@@ -45,14 +49,20 @@ struct SweepPlan {
 
 StudyResult run_sweep(const StudyContext& context, const SweepPlan& plan);
 
-// A scene file of bench/scenes/, read as stage 5.1 reads one.
-browser::SceneDescription bench_scene(const StudyContext& context, const std::string& name);
+// The stages a scene of this many bodies runs on: every chapter 5 stage, but from
+// kBookStageMostBodies on not 5.1, whose test of every pair would then take most of the
+// bench's time (5.2's grid finds the very same pairs, in a fraction of it).
+inline constexpr std::size_t kBookStageMostBodies = 200;
+std::vector<Stage> stages_for(std::size_t bodies);
 
-// The chart of error against cost for rows of one scene: a series per knob, one for
-// the scene's own world and one for Box2D.
+// A scene file of bench/scenes/.
+SceneDescription bench_scene(const StudyContext& context, const std::string& name);
+
+// The chart of error against cost for rows of one scene: a series per stage and knob,
+// one for the scene's own world on each stage, and one for Box2D.
 Chart cost_error_chart(const std::string& title, const std::vector<Row>& rows, const ErrorAxis& error);
 
-// The table's first columns: setting, cost per step, steps per second, cost per
+// The table's first columns: stage, setting, cost per step, steps per second, cost per
 // simulated second, pairs per step.
 std::vector<Column> cost_columns();
 std::string table(const std::vector<Row>& rows, const std::vector<Column>& columns);

@@ -18,7 +18,7 @@ namespace {
 constexpr double kSeconds = 2.0;
 
 Measure parabola_error() {
-    return [](BenchWorld& world, const browser::WorldSettings& settings) {
+    return [](BenchWorld& world, const WorldDescription& settings) {
         const Snapshot start = world.snapshot();
         const long steps = steps_for(kSeconds, settings.dt);
         world.run(steps);
@@ -33,7 +33,7 @@ Measure parabola_error() {
 }  // namespace
 
 StudyResult trajectory_study(const StudyContext& context) {
-    const browser::SceneDescription scene = bench_scene(context, "projectile");
+    const SceneDescription scene = bench_scene(context, "projectile");
     const RowSource source{"projectile", "projectile", scene};
     const std::vector<int> per_second = context.quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
     StudyResult result;
@@ -42,15 +42,17 @@ StudyResult trajectory_study(const StudyContext& context) {
                 .y_label = "position error (px)",
                 .log_x = true,
                 .log_y = true};
-    for (auto integrator : {browser::Integrator::symplectic, browser::Integrator::explicit_euler}) {
-        Series series{.name = std::string(browser::knob_name(integrator)), .joined = true};
+    // The integrator is a key of 5.3's: both lines are its.
+    const Stage stage = Stage::s5_3;
+    for (Integrator integrator : {Integrator::symplectic, Integrator::explicit_euler}) {
+        const std::string name(spelling(integrator));
+        Series series{.name = stage_name(stage) + " " + name, .joined = true};
         for (int rate : per_second) {
-            browser::WorldSettings world = scene.world;
+            WorldDescription world = scene.world;
             world.integrator = integrator;
             world.dt = 1.0 / rate;
-            const Setting setting{"integrator", std::string(browser::knob_name(integrator)) + ", " + dt_label(world.dt),
-                                  world};
-            result.rows.push_back(engine_row(source, setting, context.repeats, parabola_error()));
+            const Setting setting{stage, "integrator", name + ", " + dt_label(world.dt), world};
+            result.rows.push_back(stage_row(source, setting, context.repeats, parabola_error()));
             series.points.push_back({world.dt, result.rows.back().metrics.trajectory_error.value_or(std::nan("")), ""});
         }
         chart.series.push_back(series);
@@ -70,7 +72,8 @@ StudyResult trajectory_study(const StudyContext& context) {
                        }});
     result.markdown = "## Trajectory: a projectile per integrator and dt\n\n"
                       "A disc thrown at (150, -150) px/s under gravity " + figure(scenes::kProjectileGravity) +
-                      " px/s² with nothing to hit; *error* is its distance from the exact parabola after " +
+                      " px/s² with nothing to hit, on stage " + stage_name(stage) +
+                      " (the integrator is its key); *error* is its distance from the exact parabola after " +
                       figure(kSeconds) + " s. Under constant gravity both integrators are off by exactly "
                       "g t dt / 2, symplectic Euler below the parabola (it moves with the velocity of the end "
                       "of the step) and explicit Euler above it (the velocity of the start): halving dt halves "

@@ -17,7 +17,7 @@ struct Layout {
     double far_side = 0.0;  // x of the wall's far face
 };
 
-Layout layout_of(const browser::SceneDescription& scene) {
+Layout layout_of(const SceneDescription& scene) {
     Layout layout;
     bool ball_found = false;
     bool wall_found = false;
@@ -38,15 +38,15 @@ Layout layout_of(const browser::SceneDescription& scene) {
 
 }  // namespace
 
-bool ball_passes(const browser::SceneDescription& scene, double speed) {
+bool ball_passes(Stage stage, const SceneDescription& scene, double speed) {
     const Layout layout = layout_of(scene);
-    browser::SceneDescription sent = scene;
+    SceneDescription sent = scene;
     sent.bodies[layout.ball].velocity = {speed, 0.0};
     const double past = layout.far_side + layout.ball_radius;  // centre x once wholly past
     const double distance = past - sent.bodies[layout.ball].center.x;
     const long limit = 2 * static_cast<long>(std::ceil(distance / (speed * scene.world.dt))) + 2;
 
-    const std::unique_ptr<BenchWorld> world = engine_world(sent);
+    const std::unique_ptr<BenchWorld> world = stage_world(stage, sent);
     for (long step = 0; step < limit; ++step) {
         world->run(1);
         const BodyState ball = world->snapshot()[layout.ball];
@@ -56,17 +56,17 @@ bool ball_passes(const browser::SceneDescription& scene, double speed) {
     return false;
 }
 
-double slowest_passing_speed(const browser::SceneDescription& scene, double tolerance) {
+double slowest_passing_speed(Stage stage, const SceneDescription& scene, double tolerance) {
     double low = 0.0;  // does not pass (at rest it never gets there)
     double high = kFirstGuess;
-    while (!ball_passes(scene, high)) {
+    while (!ball_passes(stage, scene, high)) {
         low = high;
         high *= 2;
         if (high > kFastest) throw std::runtime_error("tunnel search: the ball never passes");
     }
     while (high - low > tolerance * high) {
         const double middle = (low + high) / 2;
-        (ball_passes(scene, middle) ? high : low) = middle;
+        (ball_passes(stage, scene, middle) ? high : low) = middle;
     }
     return high;
 }

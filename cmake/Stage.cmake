@@ -33,7 +33,8 @@ function(add_stage id)
     list(APPEND test_sources ${stage_test})
   endif()
   add_executable(${id}_tests ${test_sources})
-  target_link_libraries(${id}_tests PRIVATE ${id}_engine catch2_main)
+  # oracle/: the collision oracle the tests judge the engine by (shared with the bench).
+  target_link_libraries(${id}_tests PRIVATE ${id}_engine oracle catch2_main)
   target_include_directories(${id}_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
   # Every test file includes Catch2's 17,000-line header: parse it once per executable.
   target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)

@@ -390,10 +390,15 @@ std::vector<BodyDescription> read_scene(const json& root, std::span<const WorldK
 }  // namespace
 
 std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const WorldKey> world_keys) {
+    return read_scene_text(read_text(file), file.string(), world_keys);
+}
+
+std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
+                                             std::span<const WorldKey> world_keys) {
     try {
-        return read_scene(parse(read_text(file)), world_keys);
+        return read_scene(parse(text), world_keys);
     } catch (const Refusal& refusal) {
-        std::string message = file.string();
+        std::string message(source);
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);
         throw SceneError(message.append(": ").append(refusal.problem));
     }

@@ -21,6 +21,7 @@
 #include <functional>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -134,5 +135,11 @@ struct SceneError : std::runtime_error {
 // Throws SceneError on the first problem found, before any setting is changed, so
 // nothing is built from a scene that is only half right.
 std::vector<BodyDescription> load_scene(const std::filesystem::path& file, std::span<const WorldKey> world_keys);
+
+// The same for a scene that is already text, such as one a program made in memory (the
+// bench hands each stage its scenes this way). `source` stands for the file name in a
+// refusal.
+std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
+                                             std::span<const WorldKey> world_keys);
 
 }  // namespace browser

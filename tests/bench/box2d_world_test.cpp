@@ -7,7 +7,7 @@
 #if BENCH_HAS_BOX2D
 
 TEST_CASE("box2d_world: masses and inertias in the scene's units") {
-    browser::SceneDescription scene;
+    bench::SceneDescription scene;
     scene.bodies = {{.shape = browser::ShapeKind::rectangle, .center = {300, 200}, .width = 40, .height = 20, .mass = 2},
                     {.shape = browser::ShapeKind::circle, .center = {100, 100}, .radius = 15, .mass = 3},
                     {.shape = browser::ShapeKind::rectangle, .center = {400, 400}, .width = 800, .height = 20, .mass = 0}};
@@ -27,7 +27,7 @@ TEST_CASE("box2d_world: masses and inertias in the scene's units") {
 TEST_CASE("box2d_world: a free fall in px, s and the scene's dt") {
     // Box2D's integrator is symplectic Euler too: after n steps from rest a body has
     // fallen g dt^2 n (n + 1) / 2 = 20 / 3600 * 60 * 61 / 2 = 10.17 px for n = 60.
-    browser::SceneDescription scene;
+    bench::SceneDescription scene;
     scene.world.gravity = {0, 20};
     scene.world.dt = 1.0 / 60;
     scene.bodies = {{.shape = browser::ShapeKind::circle, .center = {100, 100}, .radius = 10}};
@@ -44,7 +44,7 @@ TEST_CASE("box2d_world: a free fall in px, s and the scene's dt") {
 
 TEST_CASE("box2d_world: a build without Box2D has no Box2D world") {
     CHECK_FALSE(bench::box2d_available());
-    CHECK(bench::box2d_world(browser::SceneDescription{}) == nullptr);
+    CHECK(bench::box2d_world(bench::SceneDescription{}) == nullptr);
 }
 
 #endif

@@ -1,6 +1,6 @@
-// The chart module of bench/: the Pareto front and the fitted growth exponent, worked
-// out by hand on small sets, and chart pictures that are written, read back, and skip
-// the points they cannot place.
+// The charts of bench/ and the statistics drawn on them: the Pareto front and the
+// fitted growth exponent, worked out by hand on small sets, and chart pictures that are
+// written, read back, and skip the points they cannot place.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "charts.h"
+#include "statistics.h"
 #include "image.h"
 #include "png_io.h"
 #include "scratch_folder.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "measures.h"
+#include "stages.h"
 
 namespace {
 
@@ -51,27 +52,31 @@ TEST_CASE("penetration: touching is not overlapping, and two static bodies do no
     CHECK(walls.mean == 0.0);
 }
 
-TEST_CASE("penetration: stage 5.1's shapes seen through the snapshot, a box turned on its corner") {
+TEST_CASE("penetration: every stage's shapes seen through the snapshot, a box turned on its corner") {
     // A 20 px square turned by 45 degrees stands on its corner, which is half a diagonal,
     // 10 sqrt(2) px, below its centre at y = 100: at 114.14, 4.14 px into a floor whose top
     // is at y = 110. Along the square's own sides the floor is far wider, so the corner
     // is the shortest way out.
-    browser::SceneDescription scene;
+    bench::SceneDescription scene{.world = bench::book_world()};
     scene.world.movement = false;
     scene.bodies = {body_box({100, 120}, 200, 20, 0.0), body_box({100, 100}, 20, 20, 1.0, std::acos(-1.0) / 4)};
-    const bench::Penetration found = bench::penetration(bench::engine_world(scene)->snapshot());
-    CHECK(found.pairs == 1);
-    CHECK(found.max == Approx(10 * std::sqrt(2.0) - 10));
+    for (bench::Stage stage : bench::kChapter5Stages) {
+        INFO("stage " << bench::stage_name(stage));
+        const bench::Penetration found = bench::penetration(bench::stage_world(stage, scene)->snapshot());
+        CHECK(found.pairs == 1);
+        CHECK(found.max == Approx(10 * std::sqrt(2.0) - 10));
+    }
 }
 
 TEST_CASE("kinetic_energy: 1/2 m v^2 + 1/2 I w^2, with a box's I = m (w^2 + h^2) / 12") {
     // Mass 2 at (3, 4) px/s: 1/2 2 25 = 25. I = 2 (900 + 1600) / 12 = 416.67, spinning
     // at 2 rad/s: 1/2 416.67 4 = 833.33. A static body adds nothing.
-    browser::SceneDescription scene;
+    bench::SceneDescription scene{.world = bench::book_world()};
     scene.bodies = {body_box({100, 100}, 30, 40, 2.0), body_box({300, 300}, 10, 10, 0.0)};
     scene.bodies[0].velocity = {3, 4};
     scene.bodies[0].angular_velocity = 2;
-    CHECK(bench::kinetic_energy(bench::engine_world(scene)->snapshot()) == Approx(25.0 + 2500.0 / 3));
+    const bench::Snapshot bodies = bench::stage_world(bench::Stage::s5_1, scene)->snapshot();
+    CHECK(bench::kinetic_energy(bodies) == Approx(25.0 + 2500.0 / 3));
 }
 
 TEST_CASE("top_body: the moving body highest on the screen") {

@@ -5,6 +5,7 @@
 
 #include "markdown.h"
 #include "report.h"
+#include "stages.h"
 
 namespace {
 
@@ -27,6 +28,7 @@ std::vector<std::string> fields_of(const std::string& line) {
 
 TEST_CASE("results_csv: the header, then one line per row with every column") {
     bench::Row plain;
+    plain.world = bench::book_world();
     plain.study = "pyramid_10";
     plain.scene = "pyramid_10";
     plain.setting = "passes 8";
@@ -36,11 +38,16 @@ TEST_CASE("results_csv: the header, then one line per row with every column") {
     plain.steps = 600;
     plain.metrics.top_drift = 0.5;
     bench::Row reference = plain;
-    reference.engine = bench::EngineKind::box2d;
+    reference.stage = bench::Stage::box2d;
     reference.setting = "Box2D 2.4";
+    bench::Row knobs = plain;
+    knobs.stage = bench::Stage::s5_3;
+    knobs.setting = "substeps 2";
+    knobs.world.substeps = 2;
+    knobs.world.broad_phase = bench::BroadPhase::grid;
 
-    const std::vector<std::string> lines = lines_of(bench::results_csv({plain, reference}));
-    REQUIRE(lines.size() == 3);
+    const std::vector<std::string> lines = lines_of(bench::results_csv({plain, reference, knobs}));
+    REQUIRE(lines.size() == 4);
     CHECK(lines[0] == bench::csv_header());
     const std::vector<std::string> header = fields_of(lines[0]);
     CHECK(header.front() == "study");
@@ -51,17 +58,23 @@ TEST_CASE("results_csv: the header, then one line per row with every column") {
     };
     const std::vector<std::string> first = fields_of(lines[1]);
     const std::vector<std::string> second = fields_of(lines[2]);
+    const std::vector<std::string> third = fields_of(lines[3]);
     REQUIRE(first.size() == header.size());
     REQUIRE(second.size() == header.size());
-    CHECK(first[column("engine")] == "5.1");
+    REQUIRE(third.size() == header.size());
+    CHECK(first[column("stage")] == "5.1");
     CHECK(first[column("relaxation_iterations")] == "8");
+    CHECK(first[column("substeps")].empty());  // not a key of 5.1's
     CHECK(first[column("cost_us")] == "250");
     CHECK(first[column("steps_per_s")] == "4000");  // 1e6 / 250
     CHECK(first[column("ms_per_simulated_s")] == "15");  // 250 us x 60 steps
     CHECK(first[column("top_drift")] == "0.5");
     CHECK(first[column("energy_change")].empty());  // not measured here
-    CHECK(second[column("engine")] == "box2d");
+    CHECK(second[column("stage")] == bench::stage_name(bench::Stage::box2d));
     CHECK(second[column("relaxation_iterations")].empty());  // not a Box2D knob
+    CHECK(third[column("stage")] == "5.3");
+    CHECK(third[column("substeps")] == "2");
+    CHECK(third[column("broad_phase")] == "grid");
 }
 
 TEST_CASE("results_csv: a field with a comma is quoted") {
@@ -90,15 +103,18 @@ TEST_CASE("MarkdownTable: a header line, a rule, a line per row") {
     CHECK_THROWS_AS(table.add({"only one"}), std::invalid_argument);
 }
 
-TEST_CASE("a study's rows: one CSV line per setting, the scene's own first") {
-    // The quick slide: its own world, then one other value of each knob it varies:
-    // friction model, passes, dt, sub-steps, integrator, rotation.
+TEST_CASE("a study's rows: one CSV line per setting, the scene's own on each stage first") {
+    // The quick slide: its own world on 5.1, 5.2 and 5.3, then one other value of each
+    // knob it varies, on the oldest stage that has it: passes and dt on 5.1; friction
+    // model, sub-steps, integrator and rotation on 5.3.
     const bench::StudyContext context{.quick = true, .repeats = 1, .scenes_dir = BENCH_SCENES_DIR};
     const bench::StudyResult result = bench::slide_study(context);
     const std::vector<std::string> lines = lines_of(bench::results_csv(result.rows));
-    REQUIRE(lines.size() == 1 + 7);
+    REQUIRE(lines.size() == 1 + 3 + 6);
     CHECK(lines[0] == bench::csv_header());
     CHECK_THAT(lines[1], Catch::StartsWith("slide,slide,5.1,scene,,2,"));
+    CHECK_THAT(lines[2], Catch::StartsWith("slide,slide,5.2,scene,,2,"));
+    CHECK_THAT(lines[3], Catch::StartsWith("slide,slide,5.3,scene,,2,"));
     for (const bench::Row& row : result.rows) CHECK(row.metrics.slide_error);
     REQUIRE(result.figures.size() == 1);
     CHECK(result.figures[0].file == "cost_vs_error_slide.png");

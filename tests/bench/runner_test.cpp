@@ -7,7 +7,7 @@
 namespace {
 
 bench::Measure run_steps(long steps, int* calls) {
-    return [steps, calls](bench::BenchWorld& world, const browser::WorldSettings&) {
+    return [steps, calls](bench::BenchWorld& world, const bench::WorldDescription&) {
         ++*calls;
         world.run(steps);
         bench::Metrics metrics;
@@ -24,17 +24,21 @@ TEST_CASE("median: the middle value, or the mean of the middle two") {
     CHECK_THROWS_AS(bench::median({}), std::invalid_argument);
 }
 
-TEST_CASE("engine_row: the setting's world, the steps of a run, one run per repeat") {
-    const browser::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_circle);
-    browser::WorldSettings world = scene.world;
+TEST_CASE("stage_row: the setting's stage and world, the steps of a run, one run per repeat") {
+    const bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_circle);
+    bench::WorldDescription world = scene.world;
     world.relaxation_iterations = 4;
     int calls = 0;
-    const bench::Row row =
-        bench::engine_row({"pairs", "pair", scene}, {"relaxation_iterations", "passes 4", world}, 3, run_steps(50, &calls));
+    const bench::Row row = bench::stage_row({"pairs", "pair", scene},
+                                            {bench::Stage::s5_2, "relaxation_iterations", "passes 4", world}, 3,
+                                            run_steps(50, &calls));
     CHECK(calls == 3);
     CHECK(row.repeats == 3);
     CHECK(row.steps == 50);
+    CHECK(row.stage == bench::Stage::s5_2);
     CHECK(row.world.relaxation_iterations == 4);
+    CHECK(row.world.broad_phase == bench::BroadPhase::grid);  // 5.2's own default, written out
+    CHECK_FALSE(row.world.substeps);                          // not a key of 5.2's
     CHECK(row.setting == "passes 4");
     CHECK(row.bodies == 2);
     CHECK(row.cost_us > 0);
@@ -46,24 +50,46 @@ TEST_CASE("engine_row: the setting's world, the steps of a run, one run per repe
     CHECK(*row.narrow_tests == 4.0);
 }
 
-TEST_CASE("engine_row: sub-steps repeat the passes within a step") {
-    const browser::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
-    browser::WorldSettings world = scene.world;
+TEST_CASE("stage_row: the book's 5.1 counts no pairs") {
+    const bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_circle);
+    int calls = 0;
+    const bench::Row row = bench::stage_row({"pairs", "pair", scene}, {bench::Stage::s5_1, "", "scene", scene.world}, 1,
+                                            run_steps(5, &calls));
+    CHECK(row.stage == bench::Stage::s5_1);
+    CHECK_FALSE(row.candidate_pairs);
+    CHECK_FALSE(row.narrow_tests);
+    CHECK_FALSE(row.world.broad_phase);
+}
+
+TEST_CASE("stage_row: sub-steps repeat the passes within a step") {
+    const bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
+    bench::WorldDescription world = scene.world;
     world.relaxation_iterations = 3;
     world.substeps = 2;
     int calls = 0;
-    const bench::Row row = bench::engine_row({"pairs", "pair", scene}, {"substeps", "substeps 2", world}, 1,
-                                             run_steps(10, &calls));
+    const bench::Row row = bench::stage_row(
+        {"pairs", "pair", scene}, {bench::Stage::s5_3, "substeps", "substeps 2", world}, 1, run_steps(10, &calls));
     CHECK(*row.candidate_pairs == 6.0);
 }
 
+TEST_CASE("stage_row: a stage refuses a key it does not read, naming itself and the key") {
+    const bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
+    bench::WorldDescription world = scene.world;
+    world.substeps = 2;
+    int calls = 0;
+    CHECK_THROWS_WITH(bench::stage_row({"pairs", "pair", scene}, {bench::Stage::s5_2, "substeps", "substeps 2", world},
+                                       1, run_steps(10, &calls)),
+                      Catch::StartsWith("stage 5.2: the bench's scene: world.substeps: unknown key"));
+    CHECK(calls == 0);
+}
+
 TEST_CASE("box2d_row: Box2D's row where this build has Box2D") {
-    const browser::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
+    const bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
     int calls = 0;
     const std::optional<bench::Row> row = bench::box2d_row({"pairs", "pair", scene}, 2, run_steps(20, &calls));
 #if BENCH_HAS_BOX2D
     REQUIRE(row);
-    CHECK(row->engine == bench::EngineKind::box2d);
+    CHECK(row->stage == bench::Stage::box2d);
     CHECK(row->steps == 20);
     CHECK(row->repeats == 2);
     CHECK_FALSE(row->candidate_pairs);

@@ -1,27 +1,26 @@
-// The bench's scenes: the committed files are what the generators make, they read
-// back exactly, and they start as described.
+// The bench's scenes: the committed files are what the generators make, every stage
+// reads them, they read back exactly, and they start as described.
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
 
-#include "core.h"
 #include "measures.h"
+#include "scene_json.h"
 #include "scene_maker.h"
-#include "scene_writer.h"
 #include "scratch_folder.h"
+#include "stages.h"
 
 namespace {
 
-browser::SceneDescription load(const std::filesystem::path& file) {
-    return browser::load_scene(file, engine::kBookWorld, browser::WorldKeys::with_knobs);
-}
+using bench::SceneDescription;
+using bench::Stage;
 
-bool same(const browser::SceneDescription& a, const browser::SceneDescription& b) {
+bool same(const SceneDescription& a, const SceneDescription& b) {
     return a.world == b.world && a.bodies == b.bodies;
 }
 
-std::size_t moving(const browser::SceneDescription& scene) {
+std::size_t moving(const SceneDescription& scene) {
     std::size_t count = 0;
     for (const auto& body : scene.bodies) count += body.mass > 0 ? 1 : 0;
     return count;
@@ -32,47 +31,69 @@ std::size_t moving(const browser::SceneDescription& scene) {
 TEST_CASE("scenes: bench/scenes/ holds exactly what `bench --write-scenes` makes") {
     for (const bench::scenes::NamedScene& named : bench::scenes::shipped()) {
         INFO(named.name);
-        CHECK(same(load(std::filesystem::path(BENCH_SCENES_DIR) / (named.name + ".json")), named.scene));
+        CHECK(same(bench::read_scene(std::filesystem::path(BENCH_SCENES_DIR) / (named.name + ".json")), named.scene));
     }
 }
 
-TEST_CASE("scene_json: every world key and body key reads back to the same value") {
+TEST_CASE("scenes: only the book's world keys, so every chapter 5 stage reads them") {
+    for (const bench::scenes::NamedScene& named : bench::scenes::shipped()) {
+        INFO(named.name);
+        for (Stage stage : bench::kChapter5Stages) CHECK(bench::can_express(stage, named.scene.world));
+    }
+}
+
+TEST_CASE("scene_json: every book key and body key reads back to the same value") {
     test::ScratchFolder folder("bench_scene_json");
-    browser::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_circle);
-    scene.world.substeps = 4;
-    scene.world.integrator = browser::Integrator::explicit_euler;
-    scene.world.broad_phase = browser::BroadPhase::all_pairs;
-    scene.world.friction_model = browser::FrictionModel::coulomb;
-    scene.world.rotation = false;
-    scene.world.friction = false;
+    SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_circle);
     scene.world.dt = 1.0 / 3;  // no short decimal form
+    scene.world.correction_rate = 0.7;
+    scene.world.positional_correction = false;
     scene.bodies[1].angle = 0.1;
     scene.bodies[1].velocity = {1.0 / 7, -2};
     scene.bodies[1].angular_velocity = -3.5;
     bench::write_scene(folder.path / "scene.json", scene);
-    CHECK(same(load(folder.path / "scene.json"), scene));
+    CHECK(same(bench::read_scene(folder.path / "scene.json"), scene));
     CHECK(folder.files() == std::vector<std::string>{"scene.json"});  // no .partial left
+}
+
+TEST_CASE("scene_json: a later stage's key is written only when set, and reaches that stage") {
+    const bench::WorldDescription book = bench::book_world();
+    CHECK_THAT(bench::scene_json({book, {}}), !Catch::Contains("substeps") && !Catch::Contains("broad_phase"));
+    // Each knob, changed on its own, makes a world that 5.3 reads differently.
+    const std::unique_ptr<bench::StageEngine> knobs = bench::stage_engine(Stage::s5_3);
+    const bench::WorldDescription defaults = bench::resolved(Stage::s5_3, book);
+    std::vector<bench::WorldDescription> changed(6, defaults);
+    changed[0].broad_phase = bench::BroadPhase::all_pairs;
+    changed[1].substeps = 4;
+    changed[2].integrator = bench::Integrator::explicit_euler;
+    changed[3].friction_model = bench::FrictionModel::coulomb;
+    changed[4].rotation = false;
+    changed[5].friction = false;
+    for (const bench::WorldDescription& world : changed) {
+        CHECK_FALSE(knobs->same_settings(world, defaults));
+        CHECK(bench::resolved(Stage::s5_3, world) == world);
+    }
 }
 
 TEST_CASE("scenes: the pyramids have rows (rows + 1) / 2 boxes, and no two shapes overlap at the start") {
     for (int rows : {10, 20}) {
-        const browser::SceneDescription scene = bench::scenes::pyramid(rows);
+        const SceneDescription scene = bench::scenes::pyramid(rows);
         CHECK(moving(scene) == static_cast<std::size_t>(rows * (rows + 1) / 2));
-        CHECK(bench::penetration(bench::engine_world(scene)->snapshot()).pairs == 0);
+        CHECK(bench::penetration(bench::stage_world(Stage::s5_1, scene)->snapshot()).pairs == 0);
     }
 }
 
 TEST_CASE("scenes: the rains hold the shapes asked for in an open box, none overlapping at the start") {
     for (int shapes : {100, 400}) {
-        const browser::SceneDescription scene = bench::scenes::rain(shapes);
+        const SceneDescription scene = bench::scenes::rain(shapes);
         CHECK(moving(scene) == static_cast<std::size_t>(shapes));
         CHECK(scene.bodies.size() == static_cast<std::size_t>(shapes) + 3);  // floor and two walls
-        CHECK(bench::penetration(bench::engine_world(scene)->snapshot()).pairs == 0);
+        CHECK(bench::penetration(bench::stage_world(Stage::s5_1, scene)->snapshot()).pairs == 0);
     }
 }
 
 TEST_CASE("scenes: the gas is 60 discs at 150 px/s, elastic and frictionless, in a closed box without gravity") {
-    const browser::SceneDescription scene = bench::scenes::gas();
+    const SceneDescription scene = bench::scenes::gas();
     CHECK(scene.world.gravity == browser::Vec2{0, 0});
     CHECK(scene.bodies.size() == 64);
     for (const auto& body : scene.bodies) {
@@ -80,13 +101,13 @@ TEST_CASE("scenes: the gas is 60 discs at 150 px/s, elastic and frictionless, in
         CHECK(body.friction == 0.0);
         if (body.mass > 0) CHECK(body.velocity.length() == Approx(150.0));
     }
-    CHECK(bench::penetration(bench::engine_world(scene)->snapshot()).pairs == 0);
+    CHECK(bench::penetration(bench::stage_world(Stage::s5_1, scene)->snapshot()).pairs == 0);
 }
 
 TEST_CASE("scenes: the slope's disc touches the slope, and the wall's ball starts 1 px from the wall") {
-    const bench::Snapshot slope = bench::engine_world(bench::scenes::slope())->snapshot();
+    const bench::Snapshot slope = bench::stage_world(Stage::s5_1, bench::scenes::slope())->snapshot();
     CHECK(oracle::depth(slope[0].shape, slope[1].shape) == Approx(0.0).margin(1e-9));
-    const bench::Snapshot wall = bench::engine_world(bench::scenes::thin_wall())->snapshot();
+    const bench::Snapshot wall = bench::stage_world(Stage::s5_1, bench::scenes::thin_wall())->snapshot();
     CHECK(oracle::depth(wall[0].shape, wall[1].shape) == Approx(-1.0));
 }
 
@@ -94,7 +115,7 @@ TEST_CASE("scenes: the scale scenes keep their density as they grow") {
     // sqrt(n) rounded up columns of 20 px, 20 px in from the canvas's edges: 50 shapes on
     // 8 x 8 cells, 2000 on 45 x 45.
     for (const auto& [shapes, columns] : std::vector<std::array<int, 2>>{{50, 8}, {2000, 45}}) {
-        const browser::SceneDescription scene = bench::scenes::scale(shapes);
+        const SceneDescription scene = bench::scenes::scale(shapes);
         CHECK(moving(scene) == static_cast<std::size_t>(shapes));
         CHECK(scene.bodies.size() == static_cast<std::size_t>(shapes));
         CHECK(scene.world.width == columns * 20 + 40);

@@ -101,8 +101,8 @@ TEST_CASE("extremes: a light box on a heavy one (1 : 1e6) rests on the floor, bo
     double box_in_slab = slab_in_floor;
     double drift = 0.0;
     runChecked(stack.page, 600, [&](int) {
-        slab_in_floor = std::max(slab_in_floor, test::depth(stack.slab, stack.floor));
-        box_in_slab = std::max(box_in_slab, test::depth(stack.box, stack.slab));
+        slab_in_floor = std::max(slab_in_floor, oracle::depth(stack.slab, stack.floor));
+        box_in_slab = std::max(box_in_slab, oracle::depth(stack.box, stack.slab));
         drift = std::max({drift, stack.slab.center().distance(slab_start), stack.box.center().distance(box_start)});
     });
     // Physics: a stack at rest stays at rest, with no overlap at all. The engine lets a
@@ -133,8 +133,8 @@ TEST_CASE("extremes: a heavy box on a light one (1e6 : 1) falls as if the slab w
     double box_in_floor = slab_in_floor;
     double fall_speed_after_1s = 0.0;
     runChecked(stack.page, 600, [&](int step) {
-        slab_in_floor = std::max(slab_in_floor, test::depth(stack.slab, stack.floor));
-        box_in_floor = std::max(box_in_floor, test::depth(stack.box, stack.floor));
+        slab_in_floor = std::max(slab_in_floor, oracle::depth(stack.slab, stack.floor));
+        box_in_floor = std::max(box_in_floor, oracle::depth(stack.box, stack.floor));
         if (step == 60) fall_speed_after_1s = stack.box.velocity().y;
     });
     WARN("1e6 on 1: box falls at " << fall_speed_after_1s << " px/s after 1 s (free fall: " << kG
@@ -152,8 +152,8 @@ TEST_CASE("extremes: a heavy box on a light one (1e6 : 1) falls as if the slab w
     // How it ends is not pinned: the squeezing out is chaotic, and any change to the
     // impulses (even the friction fix that the rough box case below asks for) keeps
     // the slab pressed in instead. Now, after 10 s, both lie on the floor side by side.
-    WARN("1e6 on 1 after 10 s: slab " << test::depth(stack.slab, stack.floor) << " px into the floor at x = "
-                                      << stack.slab.center().x << ", box " << test::depth(stack.box, stack.floor)
+    WARN("1e6 on 1 after 10 s: slab " << oracle::depth(stack.slab, stack.floor) << " px into the floor at x = "
+                                      << stack.slab.center().x << ", box " << oracle::depth(stack.box, stack.floor)
                                       << " px into the floor at x = " << stack.box.center().x);
 }
 
@@ -192,8 +192,8 @@ TEST_CASE("extremes: 0.01 px shapes land on a 100,000 px box that lands on a 100
     double small_in_box = box_in_floor;
     double speck_spin = 0.0;
     runChecked(page, 600, [&](int) {
-        box_in_floor = std::max(box_in_floor, test::depth(box, floor));
-        for (const engine::RigidShape* shape : small) small_in_box = std::max(small_in_box, test::depth(*shape, box));
+        box_in_floor = std::max(box_in_floor, oracle::depth(box, floor));
+        for (const engine::RigidShape* shape : small) small_in_box = std::max(small_in_box, oracle::depth(*shape, box));
         speck_spin = std::max(speck_spin, std::abs(speck.angularVelocity()));
     });
     // The box falls 1 px. The small shapes fall 1 px with it and 1 px more after it has
@@ -212,7 +212,7 @@ TEST_CASE("extremes: 0.01 px shapes land on a 100,000 px box that lands on a 100
     CHECK(small_in_box <= landingDepth(small_landing, kDt));
     // Still on top of the box, not sunk into it: every small shape ends within a
     // resting step's sinking (g dt^2 = 0.0056 px, doubled for the rocking) of lying on it.
-    for (const engine::RigidShape* shape : small) CHECK(test::depth(*shape, box) <= 2 * kG * kDt * kDt);
+    for (const engine::RigidShape* shape : small) CHECK(oracle::depth(*shape, box) <= 2 * kG * kDt * kDt);
     // Resting shapes do not travel. They jitter: each step a resting contact is pushed
     // out and sinks again, at one corner of the box at a time, and the 0.01 px square is
     // flicked round by it (its spin is printed above). 10 px bounds the drift.
@@ -350,8 +350,8 @@ TEST_CASE("extremes: for dt from 1e-5 s to 0.1 s a dropped ball and box land and
     // Two simulated seconds: 200,000 steps at 1e-5 s.
     runChecked(page, static_cast<int>(std::lround(2.0 / dt)), [&](int) {
         most_energy = std::max(most_energy, energy());
-        ball_in_floor = std::max(ball_in_floor, test::depth(ball, floor));
-        box_in_floor = std::max(box_in_floor, test::depth(box, floor));
+        ball_in_floor = std::max(ball_in_floor, oracle::depth(ball, floor));
+        box_in_floor = std::max(box_in_floor, oracle::depth(box, floor));
     });
     // Landing from 5 px, at sqrt(2 g 5 px) = 14.1 px/s, sinks no deeper than one step.
     const double bound = landingDepth(fallSpeed(5), dt);
@@ -361,12 +361,12 @@ TEST_CASE("extremes: for dt from 1e-5 s to 0.1 s a dropped ball and box land and
     // v dt = g dt^2 / (1 + e) deep: 0.167 px at dt = 0.1 s, 1.7e-9 px at 1e-5 s.
     const double resting = kG * dt * dt / (1 + ball.restitution());
     WARN("dt " << dt << ": ball " << ball_in_floor << " px and box " << box_in_floor
-               << " px into the floor at worst (bound " << bound << "); the ball rests " << test::depth(ball, floor)
+               << " px into the floor at worst (bound " << bound << "); the ball rests " << oracle::depth(ball, floor)
                << " px deep (g dt^2 / (1 + e) = " << resting << "); energy at most " << most_energy - start_energy
                << " above the start");
     CHECK(ball_in_floor <= bound);
     CHECK(box_in_floor <= bound);
-    CHECK(test::depth(ball, floor) == Approx(resting).epsilon(0.01));
+    CHECK(oracle::depth(ball, floor) == Approx(resting).epsilon(0.01));
     // Symplectic Euler loses m g^2 dt^2 / 2 each step of a fall from rest, and a bounce
     // with e < 1 loses more: the energy never rises above the start (rounding aside).
     CHECK(most_energy <= start_energy + 1e-9 * std::abs(start_energy));
@@ -411,7 +411,7 @@ TEST_CASE("extremes: 1,000 shapes made at one point push apart, finite and bound
     }
     // How far apart they are: pairs that the oracle finds more than 0.01 px deep.
     std::vector<oracle::Shape> outlines;
-    for (std::size_t i = 0; i < page.core.objectCount(); ++i) outlines.push_back(test::outline(page.core.object(i)));
+    for (std::size_t i = 0; i < page.core.objectCount(); ++i) outlines.push_back(oracle::outline(page.core.object(i)));
     int overlapping = 0;
     double deepest = 0.0;
     for (std::size_t i = 0; i < outlines.size(); ++i) {
@@ -556,15 +556,15 @@ TEST_CASE("extremes: shapes that coincide exactly part in one step, at rest, kee
         pair.build(page.core);
         const engine::RigidShape& a = page.core.object(0);
         const engine::RigidShape& b = page.core.object(1);
-        REQUIRE(test::depth(a, b) == Approx(pair.overlap).epsilon(1e-12));
+        REQUIRE(oracle::depth(a, b) == Approx(pair.overlap).epsilon(1e-12));
         const Vec2 centre = test::centreOfMass(page.core);
         runChecked(page, 1);
         // Each pass removes 80% of what is left, along a normal that stays the same: one
         // step leaves 0.2^15 of the overlap. Nothing moved towards anything, so no
         // impulse, and the correction keeps the centre of mass.
-        WARN(pair.name << ": " << pair.overlap << " px deep, after one step " << test::depth(a, b)
+        WARN(pair.name << ": " << pair.overlap << " px deep, after one step " << oracle::depth(a, b)
                        << " px (0.2^15 of it: " << pair.overlap * kLeftAfterOneStep << ")");
-        CHECK(test::depth(a, b) == Approx(pair.overlap * kLeftAfterOneStep).margin(1e-12));
+        CHECK(oracle::depth(a, b) == Approx(pair.overlap * kLeftAfterOneStep).margin(1e-12));
         CHECK(test::kineticEnergy(page.core) == 0.0);
         CHECK(test::centreOfMass(page.core).distance(centre) <= 1e-12);
     }

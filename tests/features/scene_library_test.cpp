@@ -30,10 +30,10 @@
 
 namespace fs = std::filesystem;
 using engine::Vec2;
-using test::depth;
+using oracle::depth;
+using oracle::outline;
 using test::finite;
 using test::kineticEnergy;
-using test::outline;
 
 namespace {
 

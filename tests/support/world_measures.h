@@ -1,8 +1,8 @@
 #pragma once
 // What tests measure a world by, worked out from each shape's centre,
 // size, angle, mass and velocities only: whether every number is still finite, how deep
-// two shapes overlap (judged by the independent oracle of collision_oracle.h, never by
-// the engine's own collision tests), the kinetic energy, and the centre of mass.
+// two shapes overlap (judged by the independent oracle of oracle/collision_oracle.h,
+// never by the engine's own collision tests), the kinetic energy, and the centre of mass.
 
 #include <cmath>
 #include <cstddef>

@@ -1,6 +1,7 @@
 #pragma once
-// An independent referee for the collision tests: how deep two shapes overlap, worked
-// out the plain way, with nothing taken from the engine (not even its corners).
+// An independent referee for the collision tests and the bench: how deep two shapes
+// overlap, worked out the plain way, with nothing taken from the engine (not even its
+// corners).
 //
 //   box - box      the projection form of the separating axis theorem: project all
 //                  eight corners on the four side directions of both boxes; on each

@@ -1,25 +1,26 @@
 #pragma once
 // An engine shape as the collision oracle (collision_oracle.h) sees it: worked out from
 // its centre, size and angle only, so that overlaps are judged without the engine's own
-// collision tests. Shared by the tests and the bench.
+// collision tests. Include it where one stage's headers are on the include path: it
+// reads that stage's engine::Rectangle and engine::Circle, whichever stage it is.
 
 #include "circle.h"
 #include "collision_oracle.h"
 #include "rectangle.h"
 
-namespace test {
+namespace oracle {
 
-inline oracle::Shape outline(const engine::RigidShape& shape) {
+inline Shape outline(const engine::RigidShape& shape) {
     if (shape.type() == engine::ShapeType::Rectangle) {
         const auto& box = static_cast<const engine::Rectangle&>(shape);
-        return oracle::Box{box.center(), box.width(), box.height(), box.angle()};
+        return Box{box.center(), box.width(), box.height(), box.angle()};
     }
-    return oracle::Disc{shape.center(), static_cast<const engine::Circle&>(shape).radius()};
+    return Disc{shape.center(), static_cast<const engine::Circle&>(shape).radius()};
 }
 
 // > 0: the two shapes overlap by that much; < 0: they are apart.
 inline double depth(const engine::RigidShape& a, const engine::RigidShape& b) {
-    return oracle::depth(outline(a), outline(b));
+    return depth(outline(a), outline(b));
 }
 
-}  // namespace test
+}  // namespace oracle

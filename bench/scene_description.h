@@ -1,0 +1,64 @@
+#pragma once
+// A scene as the bench makes, writes and runs it: the world keys of a scene file and
+// its bodies. The bench's own type, so that nothing in the bench but the stage adapter
+// (stage_engine.h) needs an engine's types: each stage reads the world as scene JSON,
+// through its own engine::worldKeys, exactly as its program reads a scene file.
+//
+// The book's keys, which every chapter 5 stage reads, are always written. A key that a
+// later stage adds is written only when set: left unset, it is that stage's own
+// default, and a stage that does not read it is never asked to (a stage refuses a key
+// it does not read, as its program does).
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "scene_file.h"
+#include "vec2.h"
+
+namespace bench {
+
+using browser::Vec2;
+
+// The choices of the stages after the book, spelled as in scene files
+// (docs/scene_format.md).
+enum class BroadPhase { bounding_circle, all_pairs, grid };  // 5.2 on
+enum class Integrator { symplectic, explicit_euler };        // 5.3
+enum class FrictionModel { book, coulomb };                  // 5.3
+
+std::string_view spelling(BroadPhase phase);
+std::string_view spelling(Integrator integrator);
+std::string_view spelling(FrictionModel model);
+
+struct WorldDescription {
+    // The book's keys. No defaults here: the book's values live in the stages, and
+    // book_world() (stages.h) brings them from stage 5.1.
+    double width = 0.0;   // px
+    double height = 0.0;  // px
+    Vec2 gravity;         // px/s^2
+    double dt = 0.0;      // s
+    bool movement = false;
+    int relaxation_iterations = 0;
+    double correction_rate = 0.0;
+    bool positional_correction = false;
+    bool remove_out_of_bounds = false;
+    // The keys of the stages after the book; unset, the stage's own default.
+    std::optional<BroadPhase> broad_phase;      // 5.2 on
+    std::optional<int> substeps;                // 5.3
+    std::optional<Integrator> integrator;       // 5.3
+    std::optional<FrictionModel> friction_model;  // 5.3
+    std::optional<bool> rotation;               // 5.3
+    std::optional<bool> friction;               // 5.3
+
+    friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
+};
+
+// Sub-steps per fixed step: none asked for is one.
+int substeps_of(const WorldDescription& world);
+
+struct SceneDescription {
+    WorldDescription world;
+    std::vector<browser::BodyDescription> bodies;
+};
+
+}  // namespace bench

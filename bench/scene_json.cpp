@@ -1,0 +1,123 @@
+#include "scene_json.h"
+
+#include <charconv>
+#include <fstream>
+#include <system_error>
+
+#include "png_io.h"  // FileError
+
+namespace bench {
+namespace {
+
+// The shortest text that reads back to exactly `value`.
+std::string number(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+// Built by appending: g++ 12 warns falsely (-Wrestrict) about "text" + std::string.
+std::string vector(Vec2 v) {
+    std::string text = "[";
+    return text.append(number(v.x)).append(", ").append(number(v.y)).append("]");
+}
+std::string flag(bool on) { return on ? "true" : "false"; }
+std::string word(std::string_view text) {
+    std::string quoted = "\"";
+    return quoted.append(text).append("\"");
+}
+
+// Size, mass, friction and restitution always; angle and motion only when not 0.
+std::string body_json(const browser::BodyDescription& b) {
+    std::string text = "{\"shape\": " + word(browser::shape_name(b.shape)) + ", \"center\": " + vector(b.center);
+    if (b.shape == browser::ShapeKind::circle) {
+        text += ", \"radius\": " + number(b.radius);
+    } else {
+        text += ", \"width\": " + number(b.width) + ", \"height\": " + number(b.height);
+    }
+    text += ", \"mass\": " + number(b.mass) + ", \"friction\": " + number(b.friction);
+    text += ", \"restitution\": " + number(b.restitution);
+    if (b.angle != 0.0) text += ", \"angle\": " + number(b.angle);
+    if (b.velocity != Vec2{}) text += ", \"velocity\": " + vector(b.velocity);
+    if (b.angular_velocity != 0.0) text += ", \"angular_velocity\": " + number(b.angular_velocity);
+    return text + "}";
+}
+
+// The book's world keys, bound to the description's fields, with the rules every
+// stage reads them by.
+std::vector<browser::WorldKey> book_keys(WorldDescription& world) {
+    namespace rules = browser::rules;
+    return {
+        {"width", world.width, rules::kCanvasSize},
+        {"height", world.height, rules::kCanvasSize},
+        {"gravity", world.gravity},
+        {"dt", world.dt, rules::kTimeStep},
+        {"movement", world.movement},
+        {"relaxation_iterations", world.relaxation_iterations, rules::kPassCount},
+        {"correction_rate", world.correction_rate, rules::kFraction},
+        {"positional_correction", world.positional_correction},
+        {"remove_out_of_bounds", world.remove_out_of_bounds},
+    };
+}
+
+std::string world_json(const WorldDescription& world) {
+    std::string text = "{";
+    for (const WorldEntry& entry : world_entries(world)) {
+        text.append(text.size() == 1 ? "" : ", ").append(word(entry.key)).append(": ").append(entry.value);
+    }
+    return text + "}";
+}
+
+}  // namespace
+
+std::vector<WorldEntry> world_entries(const WorldDescription& w) {
+    std::vector<WorldEntry> entries{{"width", number(w.width)},
+                                    {"height", number(w.height)},
+                                    {"gravity", vector(w.gravity)},
+                                    {"dt", number(w.dt)},
+                                    {"relaxation_iterations", std::to_string(w.relaxation_iterations)},
+                                    {"correction_rate", number(w.correction_rate)},
+                                    {"movement", flag(w.movement)},
+                                    {"positional_correction", flag(w.positional_correction)},
+                                    {"remove_out_of_bounds", flag(w.remove_out_of_bounds)}};
+    if (w.broad_phase) entries.push_back({"broad_phase", word(spelling(*w.broad_phase))});
+    if (w.substeps) entries.push_back({"substeps", std::to_string(*w.substeps)});
+    if (w.integrator) entries.push_back({"integrator", word(spelling(*w.integrator))});
+    if (w.friction_model) entries.push_back({"friction_model", word(spelling(*w.friction_model))});
+    if (w.rotation) entries.push_back({"rotation", flag(*w.rotation)});
+    if (w.friction) entries.push_back({"friction", flag(*w.friction)});
+    return entries;
+}
+
+std::string scene_json(const SceneDescription& scene) {
+    std::string text = "{\n  \"world\": " + world_json(scene.world) + ",\n  \"bodies\": [";
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        text += i == 0 ? "\n    " : ",\n    ";
+        text += body_json(scene.bodies[i]);
+    }
+    return text + (scene.bodies.empty() ? "]\n}\n" : "\n  ]\n}\n");
+}
+
+void write_scene(const std::filesystem::path& file, const SceneDescription& scene) {
+    std::filesystem::path partial = file;
+    partial += ".partial";
+    {
+        std::ofstream out(partial, std::ios::binary);
+        out << scene_json(scene);
+        if (!out.flush()) throw browser::FileError("cannot write scene file \"" + partial.string() + "\"");
+    }
+    std::error_code error;
+    std::filesystem::rename(partial, file, error);
+    if (error) {
+        std::filesystem::remove(partial, error);
+        throw browser::FileError("cannot write scene file \"" + file.string() + "\"");
+    }
+}
+
+SceneDescription read_scene(const std::filesystem::path& file) {
+    SceneDescription scene;
+    scene.bodies = browser::load_scene(file, book_keys(scene.world));
+    return scene;
+}
+
+}  // namespace bench

@@ -1,0 +1,39 @@
+#pragma once
+// One chapter 5 stage's engine, as the bench drives it. Stages 5.1, 5.2 and 5.3 all
+// keep their engine in namespace engine under the same class names, so this interface
+// names no engine type: each stage gets its own implementation, made by one adapter
+// (stage_adapter.cpp) compiled once per stage (bench/CMakeLists.txt says how), and the
+// rest of the bench sees only this.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_world.h"
+#include "scene_description.h"
+
+namespace bench {
+
+class StageEngine {
+public:
+    virtual ~StageEngine() = default;
+
+    // The world keys the stage's scene files may hold: the names of its engine::worldKeys.
+    virtual std::vector<std::string> world_keys() const = 0;
+    // The book's world keys as the stage's engine::kBookWorld has them.
+    virtual WorldDescription book_world() const = 0;
+    // The stage's engine with the scene built, its world read from the scene's JSON by the
+    // stage's own world keys. Throws browser::SceneError, in the words of the stage's
+    // program, for a key the stage does not read or a value it refuses.
+    virtual std::unique_ptr<BenchWorld> world(const SceneDescription& scene) const = 0;
+    // Whether the stage reads the two worlds as the same settings: a key left unset is the
+    // same as the stage's default written out. Throws browser::SceneError as world() does.
+    virtual bool same_settings(const WorldDescription& a, const WorldDescription& b) const = 0;
+};
+
+// One per stage, each defined by the adapter compiled with that stage.
+std::unique_ptr<StageEngine> s5_1_engine();
+std::unique_ptr<StageEngine> s5_2_engine();
+std::unique_ptr<StageEngine> s5_3_engine();
+
+}  // namespace bench

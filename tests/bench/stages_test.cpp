@@ -1,0 +1,105 @@
+// The three chapter 5 stages in one program: each is its own engine, reads the keys its
+// scene files may hold and refuses the others, and moves a scene as the others do where
+// the book's engine is all it uses.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scene_maker.h"
+#include "stages.h"
+
+namespace {
+
+using bench::Stage;
+using bench::WorldDescription;
+
+WorldDescription with(void (*change)(WorldDescription&)) {
+    WorldDescription world = bench::book_world();
+    change(world);
+    return world;
+}
+
+bool same_positions(const bench::Snapshot& a, const bench::Snapshot& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (oracle::center(a[i].shape) != oracle::center(b[i].shape) || a[i].velocity != b[i].velocity) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("stages: each row's stage by name") {
+    CHECK(bench::stage_name(Stage::s5_1) == "5.1");
+    CHECK(bench::stage_name(Stage::s5_2) == "5.2");
+    CHECK(bench::stage_name(Stage::s5_3) == "5.3");
+    CHECK_THROWS_AS(bench::stage_engine(Stage::box2d), std::invalid_argument);
+}
+
+TEST_CASE("stages: the book's world, as stage 5.1 keeps it") {
+    const WorldDescription book = bench::book_world();
+    CHECK(book.dt == 1.0 / 60);
+    CHECK(book.relaxation_iterations == 15);
+    CHECK(book.correction_rate == 0.8);
+    CHECK_FALSE(book.broad_phase);
+    CHECK_FALSE(book.substeps);
+}
+
+TEST_CASE("stages: what each stage can express is what its scene files may say") {
+    const WorldDescription grid = with([](WorldDescription& w) { w.broad_phase = bench::BroadPhase::grid; });
+    const WorldDescription substeps = with([](WorldDescription& w) { w.substeps = 2; });
+    const WorldDescription coulomb =
+        with([](WorldDescription& w) { w.friction_model = bench::FrictionModel::coulomb; });
+    for (Stage stage : bench::kChapter5Stages) CHECK(bench::can_express(stage, bench::book_world()));
+    CHECK_FALSE(bench::can_express(Stage::s5_1, grid));
+    CHECK(bench::can_express(Stage::s5_2, grid));
+    CHECK_FALSE(bench::can_express(Stage::s5_2, substeps));
+    CHECK(bench::can_express(Stage::s5_3, substeps));
+    CHECK(bench::can_express(Stage::s5_3, coulomb));
+    const std::vector<Stage> all{bench::kChapter5Stages.begin(), bench::kChapter5Stages.end()};
+    CHECK(bench::oldest_expressing(all, bench::book_world()) == Stage::s5_1);
+    CHECK(bench::oldest_expressing(all, grid) == Stage::s5_2);
+    CHECK(bench::oldest_expressing(all, coulomb) == Stage::s5_3);
+    CHECK_FALSE(bench::oldest_expressing({Stage::s5_1, Stage::s5_2}, coulomb));
+}
+
+TEST_CASE("stages: a stage refuses a key it does not read, as its program does") {
+    bench::SceneDescription scene = bench::scenes::pair(bench::scenes::PairKind::rect_rect);
+    scene.world.broad_phase = bench::BroadPhase::grid;
+    CHECK_THROWS_WITH(bench::stage_world(Stage::s5_1, scene),
+                      Catch::StartsWith("stage 5.1: the bench's scene: world.broad_phase: unknown key; this stage's "
+                                        "world takes width, height"));
+    CHECK(bench::stage_world(Stage::s5_2, scene));
+}
+
+TEST_CASE("stages: resolved writes out each stage's own defaults, and only its keys") {
+    const WorldDescription book = bench::book_world();
+    CHECK(bench::resolved(Stage::s5_1, book) == book);
+    const WorldDescription s5_2 = bench::resolved(Stage::s5_2, book);
+    CHECK(s5_2.broad_phase == bench::BroadPhase::grid);
+    CHECK_FALSE(s5_2.substeps);
+    const WorldDescription s5_3 = bench::resolved(Stage::s5_3, book);
+    CHECK(s5_3.broad_phase == bench::BroadPhase::grid);
+    CHECK(s5_3.substeps == 1);
+    CHECK(s5_3.integrator == bench::Integrator::symplectic);
+    CHECK(s5_3.friction_model == bench::FrictionModel::book);
+    CHECK(s5_3.rotation == true);
+    CHECK(s5_3.friction == true);
+    CHECK(bench::stage_engine(Stage::s5_3)->same_settings(book, s5_3));
+}
+
+TEST_CASE("stages: the three engines move a rain alike, each in its own namespace") {
+    // 5.2's and 5.3's grid finds the very pairs the book's bounding circles find, in the
+    // same order, so the three stages, compiled into one program, must agree to the bit.
+    const bench::SceneDescription rain = bench::scenes::rain(100);
+    constexpr long kSteps = 60;
+    std::vector<bench::Snapshot> after;
+    for (Stage stage : bench::kChapter5Stages) {
+        const auto world = bench::stage_world(stage, rain);
+        world->run(kSteps);
+        after.push_back(world->snapshot());
+    }
+    CHECK(same_positions(after[0], after[1]));
+    CHECK(same_positions(after[0], after[2]));
+    CHECK_FALSE(same_positions(after[0], bench::stage_world(Stage::s5_1, rain)->snapshot()));  // it did move
+}
