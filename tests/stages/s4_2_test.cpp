@@ -3,7 +3,6 @@
 #include <catch2/catch.hpp>
 
 #include <string>
-#include <utility>
 
 #include "book_scene.h"
 #include "circle.h"
@@ -50,14 +49,7 @@ TEST_CASE("s4_2: two static shapes are still tested, and their collision drawn: 
     test::StageFixture page;
     test::buildBookScene(page.core, page.random);
     page.frame();
-    const auto& found = page.core.physics().collisions();
-    REQUIRE(found.size() == 4);
-    const std::pair<std::size_t, std::size_t> corners[] = {{1, 3}, {1, 4}, {2, 3}, {2, 4}};
-    for (std::size_t k = 0; k < 4; ++k) {
-        CHECK(found[k].first == corners[k].first);
-        CHECK(found[k].second == corners[k].second);
-        CHECK(found[k].info.depth() == Approx(1.5));
-    }
+    test::checkBorderCornersFound(page.core.physics().collisions());
     // At the bottom-left corner the line runs along the canvas's last rows but one.
     const browser::Image& pixels = page.window.document.canvas.pixels();
     CHECK(pixels.at(0, 448) == browser::colors::kOrange);
