@@ -109,7 +109,8 @@ function(add_workbench_stage stage folder)
 
   set(targets ${program} compare_png)
   set(script ${PROJECT_SOURCE_DIR}/cmake/WorkbenchTest.cmake)
-  while(judged)
+  list(LENGTH judged left)
+  while(left GREATER 0)
     list(POP_FRONT judged test target what book)
     list(APPEND targets ${target})
     if(test STREQUAL "stage")
@@ -121,7 +122,9 @@ function(add_workbench_stage stage folder)
       COMMAND ${CMAKE_COMMAND} -DTEST=${id}.${test} "-DWHAT=${what}" "-DBOOK=${book}"
         -DLOG=${log_dir}/${target} -DPROGRAM=$<TARGET_FILE:${target}> "-DFILTER=${tag}"
         -P ${script})
-    set_tests_properties(${id}.${test} PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id})
+    # Work in progress can loop for ever: 15 minutes is far more than any of our tests needs.
+    set_tests_properties(${id}.${test} PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
+    list(LENGTH judged left)
   endwhile()
 
   add_test(NAME ${id}.pictures
@@ -129,7 +132,7 @@ function(add_workbench_stage stage folder)
       -DLOG=${log_dir}/${program} -DPROGRAM=$<TARGET_FILE:${program}> -DCOMPARE=$<TARGET_FILE:compare_png>
       -DEXPECTED=${PROJECT_SOURCE_DIR}/${FOLDER}/expected -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
       -P ${script})
-  set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id})
+  set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
 
   # The engine first, when it has sources: if it does not build, nothing else can.
   get_target_property(engine_type ${id}_engine TYPE)
