@@ -74,7 +74,11 @@ private:
         for (std::size_t i = 0; i < count; ++i) {
             statistics_.candidates += static_cast<long>(count - i - 1);
             for (std::size_t j = i + 1; j < count; ++j) {
-                if (kTestBounds && !circles_.overlap(i, j)) continue;
+                if constexpr (kTestBounds) {
+                    j = circles_.nextNear(i, j, count);
+                    if (j == count) break;
+                    if (!circles_.overlap(i, j)) continue;
+                }
                 ++statistics_.narrow_tests;
                 if (resolvePair(i, j)) movedPair(i, j);
             }
