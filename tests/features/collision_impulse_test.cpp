@@ -9,6 +9,7 @@
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
+#include "near.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
 #include "world_fixture.h"
@@ -39,7 +40,7 @@ struct HeadOn {
 
 void requireConserved(Vec2 before, Vec2 after) {
     CHECK(after.x == Approx(before.x).epsilon(1e-9));
-    CHECK(after.y == Approx(before.y).margin(1e-9 * before.length()));
+    CHECK_THAT(after.y, test::near(before.y, 1e-9 * before.length()));
 }
 
 }  // namespace
@@ -67,7 +68,7 @@ TEST_CASE("collision impulse: equal circles, e = 0: they go on together, momentu
     CHECK(pair.b.velocity().x == Approx(20).epsilon(1e-12));
     requireConserved(momentum, test::linearMomentum(pair.page.core));
     pair.page.steps(30);
-    CHECK(pair.b.center().x - pair.a.center().x == Approx(20).margin(1e-6));  // touching, side by side
+    CHECK_THAT(pair.b.center().x - pair.a.center().x, test::near(20, 1e-6));  // touching, side by side
     requireConserved(momentum, test::linearMomentum(pair.page.core));
 }
 
@@ -123,7 +124,7 @@ TEST_CASE("collision impulse: separating shapes are still pushed apart, in every
     a.setVelocity({-10, 0});
     b.setVelocity({10, 0});
     page.steps(1);
-    CHECK(b.center().x - a.center().x == Approx(20 - 5 * std::pow(0.2, 15)).margin(1e-9));
+    CHECK_THAT(b.center().x - a.center().x, test::near(20 - 5 * std::pow(0.2, 15), 1e-9));
     CHECK(a.velocity() == Vec2{-10, 0});
     CHECK(b.velocity() == Vec2{10, 0});
 }

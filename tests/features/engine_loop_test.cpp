@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "core.h"
+#include "near.h"
 #include "stage_fixture.h"
 
 namespace {
@@ -29,7 +30,7 @@ TEST_CASE("engine loop: updates per frame and carried lag for mixed frame length
     for (const Frame& frame : frames) {
         now += frame.length_ms;
         CHECK(timer.updatesDue(now) == frame.updates);
-        CHECK(timer.lagMs() == Approx(frame.lag_ms).margin(kExact));
+        CHECK_THAT(timer.lagMs(), test::near(frame.lag_ms, kExact));
         CHECK(timer.lagMs() >= -kExact);
         CHECK(timer.lagMs() < kStep);
     }
@@ -43,7 +44,7 @@ TEST_CASE("engine loop: no update is ever lost, whatever the frame length") {
         for (int k = 1; k <= kFrames; ++k) updates += timer.updatesDue(k * frame_ms);
         const double elapsed = kFrames * frame_ms;
         // Every whole step of the elapsed time ran, and the lag is what is left.
-        CHECK(updates * kStep + timer.lagMs() == Approx(elapsed).margin(1e-6));
+        CHECK_THAT(updates * kStep + timer.lagMs(), test::near(elapsed, 1e-6));
         CHECK(timer.lagMs() < kStep);
     }
 }
@@ -59,6 +60,6 @@ TEST_CASE("engine loop: the core keeps time with the browser's clock") {
         CHECK(lag < kStep);
         CHECK(lag > kStep - kExact);
         const double updates = (50.0 * k - lag) / kStep;
-        CHECK(updates == Approx(3 * k - 1).margin(1e-9));
+        CHECK_THAT(updates, test::near(3 * k - 1, 1e-9));
     }
 }

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "circle.h"
+#include "near.h"
 #include "rectangle.h"
 #include "world_fixture.h"
 
@@ -32,9 +33,9 @@ TEST_CASE("movement: free fall follows the symplectic Euler closed form") {
         page.steps(1);
         const double y = start.y + n * kDt * v0.y + kDt * kDt * kG * n * (n + 1) / 2.0;
         const double x = start.x + n * kDt * v0.x;
-        REQUIRE(ball.center().x == Approx(x).margin(kExact));
-        REQUIRE(ball.center().y == Approx(y).margin(kExact));
-        REQUIRE(ball.velocity().y == Approx(v0.y + n * kG * kDt).margin(kExact));
+        REQUIRE_THAT(ball.center().x, test::near(x, kExact));
+        REQUIRE_THAT(ball.center().y, test::near(y, kExact));
+        REQUIRE_THAT(ball.velocity().y, test::near(v0.y + n * kG * kDt, kExact));
     }
 }
 
@@ -59,9 +60,9 @@ TEST_CASE("movement: explicit Euler would land on the other side of the exact pa
     // parabola by the same amount the other way. With a constant force neither is worse;
     // the difference that matters shows with forces that change with position (next test).
     const double half_gap = kG * kDt * kDt * kSteps / 2;
-    CHECK(box.center().y - exact == Approx(half_gap).margin(kExact));
-    CHECK(explicit_y - exact == Approx(-half_gap).margin(kExact));
-    CHECK(box.center().y - explicit_y == Approx(2 * half_gap).margin(kExact));
+    CHECK_THAT(box.center().y - exact, test::near(half_gap, kExact));
+    CHECK_THAT(explicit_y - exact, test::near(-half_gap, kExact));
+    CHECK_THAT(box.center().y - explicit_y, test::near(2 * half_gap, kExact));
 }
 
 TEST_CASE("movement: why symplectic: on a spring explicit Euler gains energy without bound") {
@@ -97,10 +98,10 @@ TEST_CASE("movement: a spinning shape turns by w dt each step") {
         turned.rotate(120 * kDt * 0.5);
         return turned;
     }();
-    CHECK(box.angle() == Approx(1.0).margin(1e-12));
+    CHECK_THAT(box.angle(), test::near(1.0, 1e-12));
     for (int i = 0; i < 4; ++i) {
-        CHECK(box.vertices()[i].x == Approx(once.vertices()[i].x).margin(1e-9));
-        CHECK(box.vertices()[i].y == Approx(once.vertices()[i].y).margin(1e-9));
+        CHECK_THAT(box.vertices()[i].x, test::near(once.vertices()[i].x, 1e-9));
+        CHECK_THAT(box.vertices()[i].y, test::near(once.vertices()[i].y, 1e-9));
     }
 }
 
@@ -143,7 +144,7 @@ TEST_CASE("movement: the world's dt is both the integration step and the loop's 
     }
     REQUIRE(core.stepCount() == 5);
     const double dt = settings.dt;
-    CHECK(ball.center().y == Approx(100 + dt * dt * kG * 5 * 6 / 2).margin(kExact));
+    CHECK_THAT(ball.center().y, test::near(100 + dt * dt * kG * 5 * 6 / 2, kExact));
 }
 
 TEST_CASE("movement: the book's default attributes, and inertia stored inverted") {

@@ -8,6 +8,7 @@
 
 #include "circle.h"
 #include "my_game.h"
+#include "near.h"
 #include "physics.h"
 #include "rectangle.h"
 #include "world_fixture.h"
@@ -47,14 +48,14 @@ TEST_CASE("positional correction: two circles part by inverse mass, 80% of the o
     engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
     page.steps(1);
     const double parted = 5 * (1 - kLeftAfterOneStep);
-    CHECK(light.center().x == Approx(100 - parted * 3 / 4).margin(1e-9));
-    CHECK(heavy.center().x == Approx(115 + parted / 4).margin(1e-9));
+    CHECK_THAT(light.center().x, test::near(100 - parted * 3 / 4, 1e-9));
+    CHECK_THAT(heavy.center().x, test::near(115 + parted / 4, 1e-9));
     CHECK(light.center().y == 100);
     // The pair's centre of mass has not moved: 1 * 100 + 3 * 115 = 445.
     CHECK(light.center().x + 3 * heavy.center().x == Approx(445).epsilon(1e-15));
     // The last pass still found the pair, 5 * 0.2^14 deep, and drew it.
     REQUIRE(page.core.physics().collisions().size() == 1);
-    CHECK(page.core.physics().collisions()[0].info.depth() == Approx(5 * kLeftAfterOneStep / 0.2).margin(1e-12));
+    CHECK_THAT(page.core.physics().collisions()[0].info.depth(), test::near(5 * kLeftAfterOneStep / 0.2, 1e-12));
 }
 
 TEST_CASE("positional correction: a static shape does not move, nor do two static shapes in each other") {
@@ -66,7 +67,7 @@ TEST_CASE("positional correction: a static shape does not move, nor do two stati
     CHECK(floor.center() == Vec2{100, 110});
     CHECK(wall.center() == Vec2{190, 100});  // floor and wall overlap, and stay so
     CHECK(ball.center().x == 50);
-    CHECK(ball.center().y == Approx(95 - 5 * (1 - kLeftAfterOneStep)).margin(1e-9));
+    CHECK_THAT(ball.center().y, test::near(95 - 5 * (1 - kLeftAfterOneStep), 1e-9));
     // The pass tests the floor and the wall like any pair, as the book's does; only the
     // resolution leaves two static shapes alone. (4.2 records and draws their collision,
     // later stages keep only the pairs the resolution works on.)
@@ -89,7 +90,7 @@ TEST_CASE("positional correction: M turns it off and on again") {
     CHECK(page.core.physics().collisions().size() == 1);  // still found, only not resolved
     page.press(Key::M);
     page.steps(1);
-    CHECK(b.center().x - a.center().x == Approx(20 - 10 * kLeftAfterOneStep).margin(1e-9));
+    CHECK_THAT(b.center().x - a.center().x, test::near(20 - 10 * kLeftAfterOneStep, 1e-9));
 }
 
 TEST_CASE("positional correction: 20 shapes created at one point part within 200 steps") {

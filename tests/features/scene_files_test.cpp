@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "near.h"
 #include "png_io.h"
 #include "rectangle.h"
 #include "scene_file.h"
@@ -149,8 +150,8 @@ TEST_CASE("scene files: bodies come in file order, turned, moving, with their at
     // Turned as the book does, with rotate() after construction: the corners too.
     const Vec2 corner = static_cast<const engine::Rectangle&>(platform).vertices()[0];
     const Vec2 unturned{500.25 - 200, 200.1 - 10};
-    CHECK(corner.x == Approx(unturned.rotate(platform.center(), 2.8).x).margin(1e-9));
-    CHECK(corner.y == Approx(unturned.rotate(platform.center(), 2.8).y).margin(1e-9));
+    CHECK_THAT(corner.x, test::near(unturned.rotate(platform.center(), 2.8).x, 1e-9));
+    CHECK_THAT(corner.y, test::near(unturned.rotate(platform.center(), 2.8).y, 1e-9));
 
     const engine::RigidShape& ball = page.core.object(1);
     CHECK(ball.type() == engine::ShapeType::Circle);
@@ -208,8 +209,8 @@ TEST_CASE("scene files: the scene's world runs the program: gravity, dt, movemen
     for (long k = 0; k <= 10; ++k) {
         INFO("step " << k);
         CHECK(rows[k].step == k);
-        CHECK(rows[k].cy == Approx(100 + 0.01 * 0.01 * 30 * k * (k + 1) / 2).margin(1e-9));
-        CHECK(rows[k].vy == Approx(0.3 * k).margin(1e-9));
+        CHECK_THAT(rows[k].cy, test::near(100 + 0.01 * 0.01 * 30 * k * (k + 1) / 2, 1e-9));
+        CHECK_THAT(rows[k].vy, test::near(0.3 * k, 1e-9));
     }
     const browser::Image page = browser::read_png(folder.path / "out" / "final.png");
     CHECK(page.height == 200);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "circle.h"
+#include "near.h"
 #include "rectangle.h"
 
 using engine::Vec2;
@@ -14,9 +15,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 const double kRoot3 = std::sqrt(3.0);
 
-void requireNear(Vec2 actual, Vec2 expected, double margin = 1e-12) {
-    CHECK(actual.x == Approx(expected.x).margin(margin));
-    CHECK(actual.y == Approx(expected.y).margin(margin));
+void requireNear(Vec2 actual, Vec2 expected, double tolerance = 1e-12) {
+    CHECK_THAT(actual, test::near(expected, tolerance));
 }
 }  // namespace
 

@@ -15,6 +15,7 @@
 
 #include "circle.h"
 #include "closed_box.h"
+#include "near.h"
 #include "random_scene.h"
 #include "same_state.h"
 #include "rectangle.h"
@@ -145,9 +146,9 @@ TEST_CASE("world knobs: symplectic and explicit Euler miss the exact parabola by
             const double t = n * dt;
             const double exact_y = start.y + throw_velocity.y * t + kG * t * t / 2;
             INFO("step " << n);
-            CHECK(ball.center().y - exact_y == Approx(sign * kG * dt * dt * n / 2).margin(1e-9));
-            CHECK(ball.center().x == Approx(start.x + throw_velocity.x * t).margin(1e-9));
-            CHECK(ball.velocity().y == Approx(throw_velocity.y + kG * t).margin(1e-9));
+            CHECK_THAT(ball.center().y - exact_y, test::near(sign * kG * dt * dt * n / 2, 1e-9));
+            CHECK_THAT(ball.center().x, test::near(start.x + throw_velocity.x * t, 1e-9));
+            CHECK_THAT(ball.velocity().y, test::near(throw_velocity.y + kG * t, 1e-9));
         }
     }
 }
@@ -183,8 +184,8 @@ TEST_CASE("world knobs: Coulomb friction stops a sliding box after v0^2 / (2 mu 
             const engine::Rectangle& box = addSlidingBox(page.core, kSpeed, mu);
             const double slid = slideUntilStopped(page, box, 1200);
             const double deceleration = model == engine::FrictionModel::coulomb ? mu * kG : kG;
-            CHECK(box.velocity().x == Approx(0).margin(1e-9));
-            CHECK(slid == Approx(kSpeed * kSpeed / (2 * deceleration)).margin(tolerance));
+            CHECK_THAT(box.velocity().x, test::near(0, 1e-9));
+            CHECK_THAT(slid, test::near(kSpeed * kSpeed / (2 * deceleration), tolerance));
         }
     }
 }
@@ -244,7 +245,7 @@ TEST_CASE("world knobs: rotation off does not turn a shape that was given a spin
     page.steps(60);
     CHECK(box.angle() == 0.0);
     CHECK(box.angularVelocity() == 2.0);
-    CHECK(box.velocity().y == Approx(kG).margin(1e-9));  // still falling for 1 s
+    CHECK_THAT(box.velocity().y, test::near(kG, 1e-9));  // still falling for 1 s
 }
 
 TEST_CASE("world knobs: friction off lets a box slide along a flat floor without losing speed") {
@@ -263,11 +264,11 @@ TEST_CASE("world knobs: friction off lets a box slide along a flat floor without
             CHECK(box.velocity().x < 30);
             continue;
         }
-        CHECK(box.velocity().x == Approx(60.0).margin(1e-9));
-        CHECK(box.center().x == Approx(100 + 60.0 * 120 * engine::kFrameTime).margin(1e-9));
+        CHECK_THAT(box.velocity().x, test::near(60.0, 1e-9));
+        CHECK_THAT(box.center().x, test::near(100 + 60.0 * 120 * engine::kFrameTime, 1e-9));
         // On the floor all along, neither sunk into it nor tipped over.
-        CHECK(box.center().y == Approx(kFloorTop - 10).margin(0.5));
-        CHECK(box.angle() == Approx(0).margin(0.01));
+        CHECK_THAT(box.center().y, test::near(kFloorTop - 10, 0.5));
+        CHECK_THAT(box.angle(), test::near(0, 0.01));
     }
 }
 
@@ -296,9 +297,9 @@ TEST_CASE("world knobs: a static body at rest stays put; one given a velocity mo
     CHECK(resting.angle() == 0.7);
     CHECK(resting.velocity() == Vec2{});
     const double t = kSteps * engine::kFrameTime;
-    CHECK(moving.center().x == Approx(100 + velocity.x * t).margin(1e-9));
-    CHECK(moving.center().y == Approx(100 + velocity.y * t).margin(1e-9));
-    CHECK(moving.angle() == Approx(spin * t).margin(1e-12));
+    CHECK_THAT(moving.center().x, test::near(100 + velocity.x * t, 1e-9));
+    CHECK_THAT(moving.center().y, test::near(100 + velocity.y * t, 1e-9));
+    CHECK_THAT(moving.angle(), test::near(spin * t, 1e-12));
     CHECK(moving.velocity() == velocity);
     CHECK(moving.angularVelocity() == spin);
 }

@@ -10,6 +10,7 @@
 
 #include "circle.h"
 #include "image_compare.h"
+#include "near.h"
 #include "png_io.h"
 #include "rectangle.h"
 #include "scratch_folder.h"
@@ -49,7 +50,7 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
         CHECK(box.center() == platforms[i].center);
         CHECK(box.width() == platforms[i].width);
         CHECK(box.height() == platforms[i].height);
-        CHECK(turnOf(box) == Approx(platforms[i].angle).margin(1e-12));
+        CHECK_THAT(turnOf(box), test::near(platforms[i].angle, 1e-12));
         CHECK(box.friction() == platforms[i].friction);
         CHECK(box.restitution() == platforms[i].restitution);
     }
