@@ -96,6 +96,22 @@ TEST_CASE("positional correction: each pass removes correction_rate of what is l
     }
 }
 
+TEST_CASE("positional correction: a scene file's correction_rate is a share, its relaxation_iterations a whole count") {
+    // correction_rate in [0, 1]: more than the whole overlap would push shapes past each
+    // other. relaxation_iterations a whole number in [0, 1000], so that a step ends.
+    for (const char* accepted : {R"("correction_rate": 0)", R"("correction_rate": 1)", R"("relaxation_iterations": 0)",
+                                 R"("relaxation_iterations": 1000)"}) {
+        INFO(accepted);
+        CHECK_NOTHROW(test::worldFromScene(std::string("{") + accepted + "}"));
+    }
+    for (const char* refused : {R"("correction_rate": -0.1)", R"("correction_rate": 1.5)",
+                                R"("relaxation_iterations": -1)", R"("relaxation_iterations": 2.5)",
+                                R"("relaxation_iterations": 1001)"}) {
+        INFO(refused);
+        CHECK_THROWS_AS(test::worldFromScene(std::string("{") + refused + "}"), browser::SceneError);
+    }
+}
+
 TEST_CASE("positional correction: the scene file's positional_correction: false leaves overlaps alone") {
     // Left out, the key keeps the book's setting, on; false turns the passes' correction
     // off (the M key's flag), so the pair stays 5 px deep.
