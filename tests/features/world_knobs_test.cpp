@@ -206,6 +206,28 @@ TEST_CASE("world knobs: with sub-steps the loop still runs one step per dt of ti
     CHECK(ball.center().y == 100 + kG * 257 / 512);
 }
 
+TEST_CASE("world knobs: with sub-steps a shape is removed after the sub-step that takes it off the canvas") {
+    // dt = 1/30 s in 2 sub-steps of 1/60 s, no gravity. Ball A (radius 10) leaves the
+    // canvas through its left edge, at 60 px/s: 1 px a sub-step, from x = 0.5 to -0.5.
+    // Ball B, 3 px behind it, chases it at 300 px/s: 5 px a sub-step, and after the
+    // first sub-step the two overlap by 1 px. A is off the canvas by then and removed
+    // at once, so in the second sub-step B meets nothing and keeps its speed. (Were A
+    // removed only at the end of the whole step, B would hit it first.)
+    WorldSettings world = demoWorld();
+    world.remove_out_of_bounds = true;
+    world.gravity = {0, 0};
+    world.dt = 1.0 / 30;
+    world.substeps = 2;
+    test::WorldFixture page(world);
+    page.core.add(engine::Circle({0.5, 200}, 10)).setVelocity({-60, 0});
+    engine::Circle& chaser = page.core.add(engine::Circle({23.5, 200}, 10));
+    chaser.setVelocity({-300, 0});
+    page.steps(1);
+    REQUIRE(page.core.objectCount() == 1);
+    CHECK(chaser.velocity() == Vec2{-300, 0});
+    CHECK_THAT(chaser.center(), test::near(Vec2{13.5, 200}, 1e-12));  // two moves of 5 px
+}
+
 // =================================================================================
 // Integrators
 
