@@ -103,6 +103,7 @@ TEST_CASE("pareto_front: small sets worked out by hand") {
     }
 }
 
+// The fits below work through logarithms of a handful of points: 1e-12 is their rounding.
 TEST_CASE("fitted_exponent: recovers the exponent of a power law") {
     SECTION("y = 3 x^1.5") {
         const std::vector<ChartPoint> points{{1, 3, ""}, {2, 3 * std::pow(2.0, 1.5), ""}, {4, 24, ""}, {9, 81, ""}};

@@ -107,6 +107,7 @@ TEST_CASE("scenes: the gas is 60 discs at 150 px/s, elastic and frictionless, in
 
 TEST_CASE("scenes: the slope's disc touches the slope, and the wall's ball starts 1 px from the wall") {
     const bench::Snapshot slope = bench::stage_world(Stage::s5_1, bench::scenes::slope())->snapshot();
+    // Touching to rounding: the disc's centre is worked out through a turn (sin, cos).
     CHECK_THAT(oracle::depth(slope[0].shape, slope[1].shape), test::near(0.0, 1e-9));
     const bench::Snapshot wall = bench::stage_world(Stage::s5_1, bench::scenes::thin_wall())->snapshot();
     CHECK(oracle::depth(wall[0].shape, wall[1].shape) == Approx(-1.0));

@@ -214,7 +214,7 @@ TEST_CASE("canvas: a translate after a rotate moves along the turned axes") {
     canvas.lineTo(40, 0);   // -> (150.5, 60.5)
     canvas.stroke();
     CHECK(grey(canvas, 150, 40) == 0);
-    CHECK_THAT(ink(canvas), test::near(41.0, 1.5));
+    CHECK_THAT(ink(canvas), test::near(41.0, 1.5));  // anti-aliased ends: up to a pixel and a half
 }
 
 TEST_CASE("canvas: save and restore bring back the transform and the stroke style") {
@@ -251,6 +251,7 @@ TEST_CASE("canvas: lines are anti-aliased, and move smoothly") {
     CHECK(grey(centred, 49, 30) == kWhite);
     CHECK(grey(centred, 51, 30) == kWhite);
     const Canvas on_edge = vertical_line(50.0);
+    // 1 grey level: a share of ink rounds to a whole level of 255.
     CHECK_THAT(grey(on_edge, 49, 30), test::near(127.5, 1));
     CHECK_THAT(grey(on_edge, 50, 30), test::near(127.5, 1));
 
@@ -336,7 +337,7 @@ TEST_CASE("canvas: drawing off the canvas is clipped") {
         canvas.translate(nan, 0);
         canvas.strokeRect(0, 0, 10, 10);
         CHECK(grey(canvas, 50, 20) == 0);
-        CHECK_THAT(ink(canvas), test::near(60.0, 2.0));
+        CHECK_THAT(ink(canvas), test::near(60.0, 2.0));  // anti-aliased corners: up to 2 px
     }
 }
 

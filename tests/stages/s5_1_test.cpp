@@ -50,7 +50,7 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
         CHECK(box.center() == platforms[i].center);
         CHECK(box.width() == platforms[i].width);
         CHECK(box.height() == platforms[i].height);
-        CHECK_THAT(turnOf(box), test::near(platforms[i].angle, 1e-12));
+        CHECK_THAT(turnOf(box), test::near(platforms[i].angle, 1e-12));  // atan2 of a turned normal: rounding
         CHECK(box.friction() == platforms[i].friction);
         CHECK(box.restitution() == platforms[i].restitution);
     }
