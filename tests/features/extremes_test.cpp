@@ -23,6 +23,7 @@
 #include "book_scene.h"
 #include "circle.h"
 #include "core.h"
+#include "near.h"
 #include "world_measures.h"
 #include "rectangle.h"
 #include "closed_box.h"
@@ -107,14 +108,16 @@ TEST_CASE("extremes: a light box on a heavy one (1 : 1e6) rests on the floor, bo
     });
     // Physics: a stack at rest stays at rest, with no overlap at all. The engine lets a
     // resting shape sink one step of gravity, g dt^2 / (1 + e) = 0.0046 px (see the dt
-    // case below), before the next pass pushes it out; in a stack the sinking of the
-    // two contacts adds up and the boxes rock on one contact point each. Ten such steps,
-    // 0.05 px, bound the overlap; 0.1 px the drift over 10 s.
+    // case below), before the next pass pushes it out; and with one contact point per
+    // pair each box rocks, which lowers one corner at a time a little further. That
+    // much has no closed form. Measured: 0.021 px into the floor, 0.017 px into the
+    // slab, a drift of 0.017 px in 10 s. The bounds, 0.05 px each, are about two and a
+    // half times that: a guard against a change for the worse, not physics.
     WARN("1 on 1e6: slab " << slab_in_floor << " px into the floor, box " << box_in_slab << " px into the slab, drift "
                            << drift << " px in 10 s");
     CHECK(slab_in_floor <= 0.05);
     CHECK(box_in_slab <= 0.05);
-    CHECK(drift <= 0.1);
+    CHECK(drift <= 0.05);
 }
 
 TEST_CASE("extremes: a heavy box on a light one (1e6 : 1) falls as if the slab were not there (failure, pinned)") {
@@ -215,8 +218,10 @@ TEST_CASE("extremes: 0.01 px shapes land on a 100,000 px box that lands on a 100
     for (const engine::RigidShape* shape : small) CHECK(oracle::depth(*shape, box) <= 2 * kG * kDt * kDt);
     // Resting shapes do not travel. They jitter: each step a resting contact is pushed
     // out and sinks again, at one corner of the box at a time, and the 0.01 px square is
-    // flicked round by it (its spin is printed above). 10 px bounds the drift.
-    CHECK(small_drift <= 10);
+    // flicked round by it (its spin is printed above). How far that carries them has no
+    // closed form. Measured: 1.7 px in 10 s; the bound, 4 px, is a guard against a
+    // change for the worse.
+    CHECK(small_drift <= 4);
     // The huge box lies flat: turned by 1e-6 rad, its far edge would stand 0.05 px proud.
     CHECK(std::abs(box.angle()) <= 1e-6);
 }
@@ -295,25 +300,33 @@ TEST_CASE("extremes: at up to 1e6 px/s a closed box keeps its shapes in and its 
     // 1e-9 of it). Then no shape of mass m can be faster than sqrt(2 E0 / m), and no
     // step longer than that times dt: 28,900 px at 1e6 px/s, less than half the wall.
     // So a shape that ends a step inside a wall has its centre nearer the inner face,
-    // the pass pushes it back through that face, and after the step's move it is out of
-    // the inside by no more than one step. A shape pushed by another in the last pass
-    // may go out by up to their overlap more: the bounding diameters of all of them.
+    // and the next step's pass pushes it back through that face; only then does it take
+    // that step's move, |v| dt with the velocity it ends the step with. So at the end of
+    // every step each shape is out of the inside by no more than its own last move,
+    // |v| dt, plus what other shapes pushed it by after the wall's correction: no more
+    // than their overlap, the bounding diameters of all of them (the slack).
     const double energy = test::kineticEnergy(closed.page.core);
-    const double longest_step = std::sqrt(2 * energy / 1.0) * kDt;
     double slack = 0.0;
     for (const engine::RigidShape* shape : moving) slack += 2 * shape->boundRadius();
     double most_energy = energy;
     double farthest_out = 0.0;
+    double most_beyond_step = -std::numeric_limits<double>::infinity();
     runChecked(closed.page, 600, [&](int) {
         most_energy = std::max(most_energy, test::kineticEnergy(closed.page.core));
-        for (const engine::RigidShape* shape : moving)
-            farthest_out = std::max(farthest_out, closed.outside(shape->center()));
+        for (const engine::RigidShape* shape : moving) {
+            const double out = closed.outside(shape->center());
+            farthest_out = std::max(farthest_out, out);
+            if (out > 0) most_beyond_step = std::max(most_beyond_step, out - shape->velocity().length() * kDt);
+        }
     });
     WARN("closed box at " << speed << " px/s: energy at most " << most_energy / energy << " of the start, at the end "
                           << test::kineticEnergy(closed.page.core) / energy << "; a centre went " << farthest_out
-                          << " px out of the inside (bound " << longest_step + slack << ")");
+                          << " px out of the inside, at most " << most_beyond_step
+                          << " px beyond its own last move (bound " << slack << ")");
     CHECK(most_energy <= energy * (1 + 1e-9));
-    CHECK(farthest_out <= longest_step + slack);
+    CHECK(most_beyond_step <= slack);
+    // And so no further than the fastest possible step and the slack.
+    CHECK(farthest_out <= std::sqrt(2 * energy / 1.0) * kDt + slack);
 }
 
 TEST_CASE("extremes: a rough box bouncing in a closed box gains energy with the book's friction (failure, pinned)") {
@@ -428,8 +441,11 @@ TEST_CASE("extremes: 1,000 shapes made at one point push apart, finite and bound
          << centre.distance(point) << " px");
     CHECK(centre.distance(point) <= 1e-9);
     // Pushed apart, no shape can get further than all of them laid end to end, in a
-    // line from the point: the bound of a chain.
+    // line from the point: the bound of a chain, 14,000 px. That is all the physics
+    // says; how far the rows actually spread has no closed form. Measured: 317 px. A
+    // second bound, 400 px, guards against a change for the worse.
     CHECK(farthest <= chain);
+    CHECK(farthest <= 400);
     // They have mostly parted: fewer than 1% of the pairs still overlap. (Not all:
     // unturned, at rest, every push is along a face normal or straight up, so they
     // spread along the two axes through the point, in jammed rows that part slowly.)
@@ -564,7 +580,7 @@ TEST_CASE("extremes: shapes that coincide exactly part in one step, at rest, kee
         // impulse, and the correction keeps the centre of mass.
         WARN(pair.name << ": " << pair.overlap << " px deep, after one step " << oracle::depth(a, b)
                        << " px (0.2^15 of it: " << pair.overlap * kLeftAfterOneStep << ")");
-        CHECK(oracle::depth(a, b) == Approx(pair.overlap * kLeftAfterOneStep).margin(1e-12));
+        CHECK_THAT(oracle::depth(a, b), test::near(pair.overlap * kLeftAfterOneStep, 1e-12));
         CHECK(test::kineticEnergy(page.core) == 0.0);
         CHECK(test::centreOfMass(page.core).distance(centre) <= 1e-12);
     }

@@ -4,13 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "circle.h"
 #include "my_game.h"
+#include "near.h"
 #include "physics.h"
 #include "rectangle.h"
 #include "world_fixture.h"
+#include "world_from_scene.h"
 
 using browser::Key;
 using engine::Vec2;
@@ -47,14 +50,87 @@ TEST_CASE("positional correction: two circles part by inverse mass, 80% of the o
     engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
     page.steps(1);
     const double parted = 5 * (1 - kLeftAfterOneStep);
-    CHECK(light.center().x == Approx(100 - parted * 3 / 4).margin(1e-9));
-    CHECK(heavy.center().x == Approx(115 + parted / 4).margin(1e-9));
+    // 1e-12 px: the rounding of 15 passes on coordinates near 100 px (a few 1e-14 px
+    // each), well below what the last pass moves (5 * 0.2^14 * 0.8 = 6.6e-10 px).
+    CHECK_THAT(light.center().x, test::near(100 - parted * 3 / 4, 1e-12));
+    CHECK_THAT(heavy.center().x, test::near(115 + parted / 4, 1e-12));
     CHECK(light.center().y == 100);
     // The pair's centre of mass has not moved: 1 * 100 + 3 * 115 = 445.
     CHECK(light.center().x + 3 * heavy.center().x == Approx(445).epsilon(1e-15));
     // The last pass still found the pair, 5 * 0.2^14 deep, and drew it.
     REQUIRE(page.core.physics().collisions().size() == 1);
-    CHECK(page.core.physics().collisions()[0].info.depth() == Approx(5 * kLeftAfterOneStep / 0.2).margin(1e-12));
+    CHECK_THAT(page.core.physics().collisions()[0].info.depth(), test::near(5 * kLeftAfterOneStep / 0.2, 1e-12));
+}
+
+TEST_CASE("positional correction: each pass removes correction_rate of what is left: d (1 - rate)^passes remains") {
+    // The same two circles, 5 px deep, masses 1 and 3, movement off; the world read from
+    // a scene file. Pass k finds the pair d (1 - rate)^(k - 1) deep and removes `rate` of
+    // that, the light circle taking 3/4 of the move and the heavy one 1/4; so one step of
+    // P passes leaves d (1 - rate)^P, and the last pass found d (1 - rate)^(P - 1). No
+    // pass (P = 0) or a rate of 0 moves nothing; a rate of 1 parts them in the first pass.
+    struct Case { double rate; int passes; };
+    const Case cases[] = {{0.8, 15}, {0.8, 1}, {0.8, 3}, {0.5, 15}, {0.5, 2}, {0.3, 7}, {1.0, 4}, {0.0, 15}, {0.8, 0}};
+    for (const Case& c : cases) {
+        INFO("correction_rate " << c.rate << ", relaxation_iterations " << c.passes);
+        const engine::WorldSettings world = test::worldFromScene(
+            R"({"movement": false, "correction_rate": )" + std::to_string(c.rate) + R"(, "relaxation_iterations": )" +
+            std::to_string(c.passes) + "}");
+        REQUIRE(world.correction_rate == c.rate);
+        REQUIRE(world.relaxation_iterations == c.passes);
+        test::WorldFixture page(world);
+        engine::Circle& light = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
+        engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
+        page.steps(1);
+        const double left = 5 * std::pow(1 - c.rate, c.passes);
+        // 1e-12 px: rounding of at most 15 passes on coordinates near 100 px; a pass more
+        // or less changes the gap by at least 5 * 0.2^14 * 0.8 = 6.6e-10 px here.
+        CHECK_THAT(heavy.center().x - light.center().x, test::near(20 - left, 1e-12));
+        CHECK_THAT(light.center().x, test::near(100 - (5 - left) * 3 / 4, 1e-12));
+        CHECK_THAT(heavy.center().x, test::near(115 + (5 - left) / 4, 1e-12));
+        CHECK(light.velocity() == Vec2{});
+        if (c.passes > 0 && c.rate < 1) {
+            REQUIRE(page.core.physics().collisions().size() == 1);
+            CHECK_THAT(page.core.physics().collisions()[0].info.depth(),
+                       test::near(5 * std::pow(1 - c.rate, c.passes - 1), 1e-12));
+        }
+    }
+}
+
+TEST_CASE("positional correction: a scene file's correction_rate is a share, its relaxation_iterations a whole count") {
+    // correction_rate in [0, 1]: more than the whole overlap would push shapes past each
+    // other. relaxation_iterations a whole number in [0, 1000], so that a step ends.
+    for (const char* accepted : {R"("correction_rate": 0)", R"("correction_rate": 1)", R"("relaxation_iterations": 0)",
+                                 R"("relaxation_iterations": 1000)"}) {
+        INFO(accepted);
+        CHECK_NOTHROW(test::worldFromScene(std::string("{") + accepted + "}"));
+    }
+    for (const char* refused : {R"("correction_rate": -0.1)", R"("correction_rate": 1.5)",
+                                R"("relaxation_iterations": -1)", R"("relaxation_iterations": 2.5)",
+                                R"("relaxation_iterations": 1001)"}) {
+        INFO(refused);
+        CHECK_THROWS_AS(test::worldFromScene(std::string("{") + refused + "}"), browser::SceneError);
+    }
+}
+
+TEST_CASE("positional correction: the scene file's positional_correction: false leaves overlaps alone") {
+    // Left out, the key keeps the book's setting, on; false turns the passes' correction
+    // off (the M key's flag), so the pair stays 5 px deep.
+    for (const bool on : {true, false}) {
+        INFO("positional_correction " << on);
+        const engine::WorldSettings world =
+            test::worldFromScene(on ? R"({"movement": false})" : R"({"movement": false, "positional_correction": false})");
+        REQUIRE(world.positional_correction == on);
+        test::WorldFixture page(world);
+        engine::Circle& a = page.core.add(engine::Circle({100, 100}, 10));
+        engine::Circle& b = page.core.add(engine::Circle({115, 100}, 10));
+        page.steps(1);
+        if (on) {
+            CHECK_THAT(b.center().x - a.center().x, test::near(20 - 5 * kLeftAfterOneStep, 1e-12));
+        } else {
+            CHECK(a.center() == Vec2{100, 100});
+            CHECK(b.center() == Vec2{115, 100});
+        }
+    }
 }
 
 TEST_CASE("positional correction: a static shape does not move, nor do two static shapes in each other") {
@@ -66,7 +142,7 @@ TEST_CASE("positional correction: a static shape does not move, nor do two stati
     CHECK(floor.center() == Vec2{100, 110});
     CHECK(wall.center() == Vec2{190, 100});  // floor and wall overlap, and stay so
     CHECK(ball.center().x == 50);
-    CHECK(ball.center().y == Approx(95 - 5 * (1 - kLeftAfterOneStep)).margin(1e-9));
+    CHECK_THAT(ball.center().y, test::near(95 - 5 * (1 - kLeftAfterOneStep), 1e-12));
     // The pass tests the floor and the wall like any pair, as the book's does; only the
     // resolution leaves two static shapes alone. (4.2 records and draws their collision,
     // later stages keep only the pairs the resolution works on.)
@@ -89,7 +165,9 @@ TEST_CASE("positional correction: M turns it off and on again") {
     CHECK(page.core.physics().collisions().size() == 1);  // still found, only not resolved
     page.press(Key::M);
     page.steps(1);
-    CHECK(b.center().x - a.center().x == Approx(20 - 10 * kLeftAfterOneStep).margin(1e-9));
+    // 1e-12 px: one step's rounding on coordinates near 100 px is a few 1e-14 px; the
+    // last pass's share alone, 10 * 0.2^14 * 0.8 = 1.3e-9 px, must show.
+    CHECK_THAT(b.center().x - a.center().x, test::near(20 - 10 * kLeftAfterOneStep, 1e-12));
 }
 
 TEST_CASE("positional correction: 20 shapes created at one point part within 200 steps") {

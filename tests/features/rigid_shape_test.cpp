@@ -3,14 +3,14 @@
 #include <catch2/catch.hpp>
 
 #include "circle.h"
+#include "near.h"
 #include "rectangle.h"
 
 using engine::Vec2;
 
 namespace {
 void requireNear(Vec2 actual, Vec2 expected) {
-    CHECK(actual.x == Approx(expected.x).margin(1e-12));
-    CHECK(actual.y == Approx(expected.y).margin(1e-12));
+    CHECK_THAT(actual, test::near(expected, 1e-12));
 }
 }  // namespace
 

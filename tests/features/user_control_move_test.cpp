@@ -1,8 +1,11 @@
 // W/A/S/D move and Q/E turn the selected object; R resets the world (every stage from 2.2 on).
 #include <catch2/catch.hpp>
 
+#include <string>
+
 #include "book_scene.h"
 #include "my_game.h"
+#include "near.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
 
@@ -25,9 +28,10 @@ TEST_CASE("user control: W A S D move the selected object 10 px, Q E turn it 0.1
     page.press(Key::A);
     CHECK(cursor.center() == Vec2{start.x + 20, start.y + 10});
     page.press(Key::E, 3);
-    CHECK(cursor.angle() == Approx(angle + 0.3));
+    // 1e-14 rad: three additions of 0.1 to an angle of up to 3 rad round by a few 1e-16.
+    CHECK_THAT(cursor.angle(), test::near(angle + 0.3, 1e-14));
     page.press(Key::Q);
-    CHECK(cursor.angle() == Approx(angle + 0.2));
+    CHECK_THAT(cursor.angle(), test::near(angle + 0.2, 1e-14));
     // Only the selected object moved.
     CHECK(page.core.object(1).center() == other);
 }
@@ -62,12 +66,17 @@ TEST_CASE("user control: R keeps exactly the first kKeptOnReset objects and sele
 }
 
 TEST_CASE("user control: a world of one object takes every key without leaving the list") {
+    // The selection keys cannot select past the only object, R keeps it, and the keys
+    // that move and turn it still act on it.
     test::StageFixture page;
-    page.core.add(engine::Rectangle({100, 100}, 20, 20));
+    const engine::RigidShape& box = page.core.add(engine::Rectangle({100, 100}, 20, 20));
     for (Key key : {Key::Up, Key::Down, Key::Digit1, Key::Digit9, Key::W, Key::Q, Key::R, Key::H}) {
         page.press(key);
         CHECK(page.core.selectedIndex() == 0);
         CHECK(page.core.objectCount() == 1);
     }
+    CHECK(box.center() == Vec2{100, 90});
+    CHECK(box.angle() == -0.1);
     page.frame();
+    CHECK(page.window.document.ui_echo.find("Id: 0\n") != std::string::npos);
 }

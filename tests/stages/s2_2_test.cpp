@@ -3,9 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "circle.h"
 #include "core.h"
+#include "my_game.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
 
@@ -62,6 +65,25 @@ TEST_CASE("s2_2: H toggles whether the selected object is fixed") {
     CHECK(box.center() == Vec2{200, 201});
 }
 
-TEST_CASE("s2_2: R keeps the cursor and the four borders") {
-    CHECK(engine::UserControl::kKeptOnReset == 5);
+TEST_CASE("s2_2: R keeps the cursor and the four borders, and nothing after them") {
+    // The book's scene: the cursor at the canvas centre, then the borders along the top,
+    // bottom, left and right edges of the 800 x 450 canvas. Shapes made with F and G
+    // (from the selected, moved cursor) come after them, and R takes them all away.
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    const std::vector<Vec2> kept{{400, 225}, {400, 0}, {400, 450}, {0, 225}, {800, 225}};
+    page.press(Key::Digit0);
+    page.press(Key::A, 3);
+    page.press(Key::F, 4);
+    page.press(Key::G, 3);
+    REQUIRE(page.core.objectCount() == 12);
+    page.press(Key::Down, 20);
+    REQUIRE(page.core.selectedIndex() == 11);
+    page.press(Key::R);
+    REQUIRE(page.core.objectCount() == kept.size());
+    CHECK(page.core.selectedIndex() == 0);
+    CHECK(page.core.object(0).center() == Vec2{370, 225});  // the cursor, where A left it
+    for (std::size_t i = 1; i < kept.size(); ++i) CHECK(page.core.object(i).center() == kept[i]);
+    page.press(Key::R);  // nothing left to take
+    CHECK(page.core.objectCount() == kept.size());
 }

@@ -10,6 +10,7 @@
 
 #include "circle.h"
 #include "image_compare.h"
+#include "near.h"
 #include "png_io.h"
 #include "rectangle.h"
 #include "scratch_folder.h"
@@ -49,7 +50,7 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
         CHECK(box.center() == platforms[i].center);
         CHECK(box.width() == platforms[i].width);
         CHECK(box.height() == platforms[i].height);
-        CHECK(turnOf(box) == Approx(platforms[i].angle).margin(1e-12));
+        CHECK_THAT(turnOf(box), test::near(platforms[i].angle, 1e-12));  // atan2 of a turned normal: rounding
         CHECK(box.friction() == platforms[i].friction);
         CHECK(box.restitution() == platforms[i].restitution);
     }
@@ -58,6 +59,39 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
     CHECK(page.core.settings().remove_out_of_bounds);
     CHECK(engine::UserControl::kKeptOnReset == 7);
     CHECK(engine::UserControl::kExciteSpeed == 250);
+}
+
+TEST_CASE("s5_1: the twenty random shapes are the book's, drawn in its order") {
+    for (const std::uint64_t seed : {std::uint64_t{1}, browser::Random::kDefaultSeed}) {
+        INFO("seed " << seed);
+        test::WorldFixture page(engine::kBookWorld, seed);
+        test::buildBookScene(page.core, page.random);
+        browser::Random book(seed);  // the same Math.random, drawn by hand
+        const std::vector<test::DemoShape> shapes = test::demoShapesAsTheBookDraws(book);
+        REQUIRE(page.core.objectCount() == 4 + shapes.size());
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            INFO("random shape " << k);
+            const test::DemoShape& expected = shapes[k];
+            const engine::RigidShape& shape = page.core.object(4 + k);
+            CHECK(shape.center() == expected.center);
+            if (expected.is_box) {
+                const auto* box = dynamic_cast<const engine::Rectangle*>(&shape);
+                REQUIRE(box != nullptr);
+                CHECK(box->width() == expected.width);
+                CHECK(box->height() == expected.height);
+            } else {
+                const auto* ball = dynamic_cast<const engine::Circle*>(&shape);
+                REQUIRE(ball != nullptr);
+                CHECK(ball->radius() == expected.radius);
+            }
+            // The shape keeps 1/m: m comes back to within a rounding or two of 30 (1e-13).
+            CHECK_THAT(shape.mass(), test::near(expected.mass, 1e-13));
+            CHECK(shape.friction() == expected.friction);
+            CHECK(shape.restitution() == expected.restitution);
+            CHECK(shape.velocity() == expected.velocity);
+            CHECK(shape.angularVelocity() == 0);
+        }
+    }
 }
 
 TEST_CASE("s5_1: the random shapes stay within the book's ranges over many seeds") {

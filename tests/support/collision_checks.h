@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "collision_oracle.h"
+#include "near.h"
 #include "physics.h"
 #include "random_scene.h"
 
@@ -24,14 +25,13 @@ namespace test {
 inline constexpr double kHandWorked = 1e-12;
 
 inline void requireNear(engine::Vec2 actual, engine::Vec2 expected) {
-    CHECK(actual.x == Approx(expected.x).margin(kHandWorked));
-    CHECK(actual.y == Approx(expected.y).margin(kHandWorked));
+    CHECK_THAT(actual, test::near(expected, kHandWorked));
 }
 
 inline void requireInfo(const std::optional<engine::CollisionInfo>& info, double depth, engine::Vec2 normal,
                         engine::Vec2 start, engine::Vec2 end) {
     REQUIRE(info.has_value());
-    CHECK(info->depth() == Approx(depth).margin(kHandWorked));
+    CHECK_THAT(info->depth(), test::near(depth, kHandWorked));
     requireNear(info->normal(), normal);
     requireNear(info->start(), start);
     requireNear(info->end(), end);
