@@ -37,7 +37,12 @@ for _ in $(seq 100); do [[ -s "$work/display" ]] && break; sleep 0.1; done
 export DISPLAY=":$(cat "$work/display")"
 
 cd "$work"
-SDL_VIDEODRIVER=x11 "$program" --live --record session.keys >live_out.txt 2>live_err.txt &
+# In the sanitizer build (.ci/run) leak checking is off for this one run: under X11,
+# SDL's system libraries leave about 1 KB behind at exit (libdbus, and libraries SDL
+# loads and unloads itself, so LeakSanitizer cannot even name them). The same session
+# code runs with leak checking on in live.program, under SDL's dummy driver.
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" SDL_VIDEODRIVER=x11 \
+  "$program" --live --record session.keys >live_out.txt 2>live_err.txt &
 live_pid=$!
 window=$(timeout 10 xdotool search --sync --name 's4_4' | head -n 1) || fail "no window appeared"
 # No window manager gives focus here: the keyboard goes to the window under the pointer.
