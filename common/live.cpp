@@ -8,6 +8,7 @@
 #include <string>
 #include <system_error>
 
+#include "gif_writer.h"
 #include "page.h"
 #include "png_io.h"  // FileError
 
@@ -215,7 +216,7 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     }
     std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
               << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
-              << record.string() << "; replay them into pictures and a GIF with:\n"
+              << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
               << "  " << replay_command(options.live, frames) << '\n';
     return 0;
 }
