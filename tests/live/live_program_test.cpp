@@ -65,6 +65,12 @@ Run run_in(const ScratchFolder& folder, const std::string& command) {
 
 std::string program() { return quoted(LIVE_PROGRAM); }
 
+}  // namespace
+
+#if BROWSER_HAS_SDL
+
+namespace {
+
 // The top `height` rows of a picture: a live window's page, without its status line.
 Image top_rows(const Image& picture, int height) {
     Image top(picture.width, height);
@@ -75,8 +81,6 @@ Image top_rows(const Image& picture, int height) {
 }
 
 }  // namespace
-
-#if BROWSER_HAS_SDL
 
 TEST_CASE("live program: a session's recorded script replays to the last page the window showed") {
     ScratchFolder folder("live_program");

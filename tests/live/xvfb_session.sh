@@ -6,12 +6,17 @@
 # in that order, and the replay command the program printed draws a final.png equal,
 # pixel for pixel, to the page in the screenshot (the window minus its status line).
 #
-# usage: xvfb_session.sh PROGRAM XWD_TO_PNG COMPARE_PNG
-# Exit status 77 (CTest's "skipped" here) with a message when Xvfb, xdotool or xwd is
-# missing: tools/setup installs xvfb, xdotool and x11-apps.
+# usage: xvfb_session.sh PROGRAM XWD_TO_PNG COMPARE_PNG HAS_WINDOW
+# HAS_WINDOW is "yes" when the build has SDL2's window. Exit status 77 (CTest's
+# "skipped" here) with a message when it has not, or when Xvfb, xdotool or xwd is
+# missing: tools/setup installs libsdl2-dev, xvfb, xdotool and x11-apps.
 set -euo pipefail
-program=$1 xwd_to_png=$2 compare_png=$3
+program=$1 xwd_to_png=$2 compare_png=$3 has_window=$4
 
+if [[ "$has_window" != yes ]]; then
+  echo "SKIPPED: this build has no live window (SDL2); live.program checks that --live says so"
+  exit 77
+fi
 for tool in Xvfb xdotool xwd; do
   if ! command -v "$tool" >/dev/null; then
     echo "SKIPPED: $tool is not installed (tools/setup installs xvfb, xdotool and x11-apps)"
@@ -22,8 +27,8 @@ done
 work=$(mktemp -d)
 xvfb_pid='' live_pid=''
 cleanup() {
-  [[ -n "$live_pid" ]] && kill "$live_pid" 2>/dev/null
-  [[ -n "$xvfb_pid" ]] && kill "$xvfb_pid" 2>/dev/null
+  if [[ -n "$live_pid" ]]; then kill "$live_pid" 2>/dev/null || true; fi
+  if [[ -n "$xvfb_pid" ]]; then kill "$xvfb_pid" 2>/dev/null || true; fi
   rm -rf "$work"
 }
 trap cleanup EXIT
