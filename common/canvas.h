@@ -27,7 +27,7 @@ public:
     static constexpr int kDefaultWidth = 800;   // the book's mWidth
     static constexpr int kDefaultHeight = 450;  // the book's mHeight
 
-    static constexpr int kMaxScale = 4;
+    static constexpr int kMaxScale = 4;  // a page 4 times larger is 4720 x 1800 pixels already
 
     explicit Canvas(int width = kDefaultWidth, int height = kDefaultHeight, int scale = 1);
 

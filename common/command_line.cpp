@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "canvas.h"
 #include "gif_writer.h"
 #include "live_window.h"
 #include "random.h"
@@ -19,7 +20,6 @@ namespace browser {
 namespace {
 
 constexpr double kMaxFrameMs = 10'000.0;  // ten seconds a frame is already a slide show
-constexpr int kMaxScale = 4;              // a 4 x page is 4720 x 1800 pixels already
 
 // The whole of `text` as a T, or nothing. from_chars takes no sign for unsigned types,
 // no '+', no spaces and (here) no trailing characters, so "12abc", " 5" and "-1" for a
@@ -163,7 +163,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     std::string frame_ms_text;  // read only when given, so the default stays exactly 1000/60
 
     std::string scale_text = "1";
-    bool live_flag = false;
+    bool live = false;
     std::string record_text, live_events_text, live_screenshot_text;
     const KeySet keys_of_stage = stage_keys(defaults);
 
@@ -192,7 +192,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     app.add_option("--scale", scale_text, "draw the page K times larger (1 to 4), lines and text included,"
                                           " in the window and in the pictures")
         ->type_name("K")->capture_default_str();
-    app.add_flag("--live", live_flag, "play the page in a window, keys from the keyboard (Escape ends)");
+    app.add_flag("--live", live, "play the page in a window, keys from the keyboard (Escape ends)");
     app.add_option("--record", record_text, "with --live: write the session's key presses to FILE as a key script"
                                              " and print the command that replays it")
         ->type_name("FILE");
@@ -231,7 +231,6 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         if (!parse_strictly(app, arguments)) return {std::nullopt, 0};
 
         Options options;
-        const bool live = live_flag;
         if (live) {
             refuse_picture_options_when_live(app);
             if (!live_window_supported()) throw UsageError(std::string(kNoLiveSupport));
@@ -244,7 +243,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
                                          {"--live-screenshot", live_screenshot_text}}) {
             if (app.count(name) > 0 && text.empty()) throw UsageError(std::string(name) + ": must name a file (got \"\")");
         }
-        options.scale = int_option("--scale", scale_text, 1, kMaxScale);
+        options.scale = int_option("--scale", scale_text, 1, Canvas::kMaxScale);
         options.out_dir = out_text;
         if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
         options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
@@ -294,6 +293,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
                 {"--seed", seed_text}, {"--frame-ms", frame_ms_text}, {"--scale", scale_text}};
             for (const auto& [name, value] : extra) shaping.emplace_back(name, value);
             options.live.replay_command = replay_command(app, argc, argv, program, shaping);
+            // The stage's pictures; for a stage that saves none but final.png, one a half second.
             options.live.replay_every = defaults.every > 0 ? defaults.every : 30;
             options.live.replay_gif = !defaults.gif && gif_supported();
         }
