@@ -218,6 +218,20 @@ SceneDescription scale(int shapes) {
     return scene;
 }
 
+SceneDescription spread(int shapes) {
+    constexpr double kPitch = 20.0;
+    constexpr double kRadius = 4.0;
+    const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(shapes))));
+    const double side = columns * kPitch + 2 * kMargin;
+    SceneDescription scene;
+    scene.world = world_of(side, side, 0.0);
+    for (int i = 0; i < shapes; ++i) {
+        const Vec2 cell{kMargin + (i % columns + 0.5) * kPitch, kMargin + (i / columns + 0.5) * kPitch};
+        scene.bodies.push_back({.shape = ShapeKind::circle, .center = cell, .radius = kRadius});
+    }
+    return scene;
+}
+
 SceneDescription pair(PairKind kind) {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0);

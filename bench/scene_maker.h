@@ -60,6 +60,10 @@ inline constexpr double kWallGap = 1.0;
 // (the scale study runs 11 steps: at most 4 px).
 SceneDescription scale(int shapes);
 
+// `shapes` discs (radius 4) at rest on a 20 px lattice, no gravity: no two bounding
+// circles touch, so every pair a broad phase looks at ends at its bounding-circle test.
+SceneDescription spread(int shapes);
+
 // One pair of one kind in resting contact (restitution 0, gravity 20): a box on a
 // static box, a disc on a static box, a disc balanced on top of a static disc.
 enum class PairKind { rect_rect, rect_circle, circle_circle };

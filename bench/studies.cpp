@@ -17,6 +17,7 @@ std::vector<Study> all_studies() {
         {"thin_wall", tunnelling_study},
         {"scale", scale_study},
         {"pairs", pair_cost_study},
+        {"speed", speed_study},
     };
 }
 

@@ -49,5 +49,6 @@ StudyResult slope_study(const StudyContext& context);
 StudyResult tunnelling_study(const StudyContext& context);
 StudyResult scale_study(const StudyContext& context);
 StudyResult pair_cost_study(const StudyContext& context);
+StudyResult speed_study(const StudyContext& context);
 
 }  // namespace bench

@@ -10,38 +10,26 @@
 #   <id>.<feature>     one test per feature file, also labelled <feature>
 #   <id>.stage         the stage's own tests
 #   <id>.pictures      runs the default program and compares its pictures with expected/
+#
+# Each call is also remembered (global properties PHYSICS_STAGES and
+# PHYSICS_STAGE_<id>_<FOLDER|PROGRAM|CHAPTER|FEATURES>), so that cmake/Workbench.cmake
+# can build a reader's own copy of the stage and judge it by the same tests.
 function(add_stage id)
   cmake_parse_arguments(PARSE_ARGV 1 STAGE "" "FOLDER;PROGRAM;CHAPTER" "FEATURES")
+  set_property(GLOBAL APPEND PROPERTY PHYSICS_STAGES ${id})
+  foreach(key FOLDER PROGRAM CHAPTER FEATURES)
+    set_property(GLOBAL PROPERTY PHYSICS_STAGE_${id}_${key} "${STAGE_${key}}")
+  endforeach()
   set(dir ${PROJECT_SOURCE_DIR}/${STAGE_FOLDER})
 
-  file(GLOB engine_sources CONFIGURE_DEPENDS ${dir}/*.cpp)
-  list(REMOVE_ITEM engine_sources ${dir}/main.cpp)
-  add_library(${id}_engine STATIC ${engine_sources})
-  target_include_directories(${id}_engine PUBLIC ${dir})
-  target_link_libraries(${id}_engine PUBLIC browser)
-
+  stage_engine_and_program(${id} ${dir} ${STAGE_PROGRAM})
   set(program ${id}_${STAGE_PROGRAM})
-  add_executable(${program} ${dir}/main.cpp)
-  target_link_libraries(${program} PRIVATE ${id}_engine)
 
-  set(test_sources)
-  foreach(feature IN LISTS STAGE_FEATURES)
-    list(APPEND test_sources ${PROJECT_SOURCE_DIR}/tests/features/${feature}_test.cpp)
-  endforeach()
-  set(stage_test ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
-  if(EXISTS ${stage_test})
-    list(APPEND test_sources ${stage_test})
-  endif()
+  stage_test_sources(test_sources ${id} ${STAGE_FEATURES})
   add_executable(${id}_tests ${test_sources})
-  # oracle/: the collision oracle the tests judge the engine by (shared with the bench).
-  target_link_libraries(${id}_tests PRIVATE ${id}_engine oracle catch2_main)
-  target_include_directories(${id}_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+  stage_test_program(${id}_tests ${id} ${id}_engine ${program})
   # Every test file includes Catch2's 17,000-line header: parse it once per executable.
   target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
-  target_compile_definitions(${id}_tests PRIVATE
-    STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
-    SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes"
-    BENCH_SCENES_DIR="${PROJECT_SOURCE_DIR}/bench/scenes")
 
   add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 
@@ -50,7 +38,7 @@ function(add_stage id)
     add_test(NAME ${id}.${feature} COMMAND ${id}_tests "-#" "[#${feature}_test]")
     set_tests_properties(${id}.${feature} PROPERTIES LABELS "${labels};${feature}")
   endforeach()
-  if(EXISTS ${stage_test})
+  if(EXISTS ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
     add_test(NAME ${id}.stage COMMAND ${id}_tests "-#" "[#${id}_test]")
     set_tests_properties(${id}.stage PROPERTIES LABELS "${labels};stage")
   endif()
@@ -63,4 +51,50 @@ function(add_stage id)
       -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
       -P ${PROJECT_SOURCE_DIR}/cmake/RunAndCompare.cmake)
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels};pictures")
+endfunction()
+
+# <target>_engine (every .cpp of <dir> but main.cpp) and the program <target>_<name>
+# (main.cpp). Extra arguments go to add_library and add_executable (EXCLUDE_FROM_ALL).
+# A folder with nothing but main.cpp (a reader's 1.1 as it starts) has an engine of
+# headers only.
+function(stage_engine_and_program target dir name)
+  file(GLOB engine_sources CONFIGURE_DEPENDS ${dir}/*.cpp)
+  list(REMOVE_ITEM engine_sources ${dir}/main.cpp)
+  if(engine_sources)
+    add_library(${target}_engine STATIC ${ARGN} ${engine_sources})
+    target_include_directories(${target}_engine PUBLIC ${dir})
+    target_link_libraries(${target}_engine PUBLIC browser)
+  else()
+    add_library(${target}_engine INTERFACE)
+    target_include_directories(${target}_engine INTERFACE ${dir})
+    target_link_libraries(${target}_engine INTERFACE browser)
+  endif()
+  add_executable(${target}_${name} ${ARGN} ${dir}/main.cpp)
+  target_link_libraries(${target}_${name} PRIVATE ${target}_engine)
+endfunction()
+
+# The test sources of stage <id> into <out>: tests/features/<feature>_test.cpp for each
+# feature, then tests/stages/<id>_test.cpp when there is one.
+function(stage_test_sources out id)
+  set(sources)
+  foreach(feature IN LISTS ARGN)
+    list(APPEND sources ${PROJECT_SOURCE_DIR}/tests/features/${feature}_test.cpp)
+  endforeach()
+  if(EXISTS ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
+    list(APPEND sources ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
+  endif()
+  set(${out} ${sources} PARENT_SCOPE)
+endfunction()
+
+# What a test program of stage <id> needs: the engine it judges, the oracle, Catch2's
+# main, the test support headers, and the facts the tests ask for (STAGE_ID names the
+# stage whose behaviour is expected, STAGE_PROGRAM the program to run).
+function(stage_test_program target id engine program)
+  # oracle/: the collision oracle the tests judge the engine by (shared with the bench).
+  target_link_libraries(${target} PRIVATE ${engine} oracle catch2_main)
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+  target_compile_definitions(${target} PRIVATE
+    STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
+    SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes"
+    BENCH_SCENES_DIR="${PROJECT_SOURCE_DIR}/bench/scenes")
 endfunction()

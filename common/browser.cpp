@@ -10,6 +10,8 @@
 
 #include "contact_sheet.h"
 #include "gif_writer.h"
+#include "live.h"
+#include "live_window.h"
 #include "output_folder.h"
 #include "png_io.h"
 
@@ -44,7 +46,7 @@ public:
     Recorder(const Options& options, fs::path folder) : options_(options), folder_(std::move(folder)) {
         if (options.every > 0) {
             sheet_frames_ = contact_sheet_frames(options.frames, options.every);
-            sheet_.emplace(static_cast<int>(sheet_frames_.size()));
+            sheet_.emplace(static_cast<int>(sheet_frames_.size()), options.scale);
         }
     }
 
@@ -128,10 +130,29 @@ private:
 
 }  // namespace
 
+Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {
+    document.canvas.setScale(options.scale);
+}
+
 int run(PageScripts& scripts, Window& window, const Options& options) {
     // parse_command_line never gives these; a test or a stage that builds Options by hand might.
     if (options.frames < 1 || (options.gif && options.gif_every < 1)) {
         throw std::invalid_argument("browser::run: options.frames and options.gif_every must be at least 1");
+    }
+    // A stage that made its window without the options would draw --scale K at scale 1.
+    if (window.document.canvas.scale() != options.scale) {
+        throw std::invalid_argument("browser::run: the window's canvas scale is not options.scale (make it with Window(options))");
+    }
+    if (options.live.on) {
+        try {
+            const std::unique_ptr<Screen> screen = open_live_window(
+                {.title = options.live.title, .frame_ms = options.frame_ms, .events = options.live.events,
+                 .screenshot = options.live.screenshot});
+            return run_live(scripts, window, options, *screen);
+        } catch (const LiveWindowError& error) {
+            std::cerr << error.what() << '\n';
+            return 1;
+        }
     }
     if (options.gif && !gif_supported()) {
         std::cerr << kNoGifSupport << '\n';

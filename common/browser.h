@@ -17,6 +17,9 @@ namespace browser {
 // What the page's scripts can reach: window.document and Date.now().
 struct Window {
     explicit Window(double frame_ms, Document page = Document()) : document(std::move(page)), clock(frame_ms) {}
+    // A stage's window: the clock runs at options.frame_ms, and the canvas has
+    // options.scale device pixels a unit (--scale), which blanks it.
+    explicit Window(const Options& options, Document page = Document());
     Document document;
     Clock clock;
 };
@@ -41,6 +44,9 @@ public:
 // Returns the exit status: 0; 1 with a one-line message on stderr when the pictures
 // cannot be written; 2 with gif_writer.h's one line kNoGifSupport when options.gif
 // asks for a GIF that this build cannot write (nothing is written then).
+// With options.live.on it plays the page in a window instead (live.h), writing no
+// pictures: 0 when the reader closes it, 1 with one line when no window can be opened
+// or the recorded key script or screenshot cannot be written.
 int run(PageScripts& scripts, Window& window, const Options& options);
 
 }  // namespace browser

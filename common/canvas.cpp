@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 namespace browser {
@@ -18,16 +19,18 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // through pixel centres fills one row, a line along pixel edges half-fills two rows).
 // So coverage falls linearly from 1 on the path to 0 one pixel away, and changes only
 // a little when the path moves a little: a slowly turning shape does not flicker.
+// On a canvas of scale K the pen is K device pixels wide, and its reach K of them.
 constexpr double kPenReach = 1.0;
 
 // Arcs are drawn as chords. A chord spanning the angle t lies at most r (1 - cos(t/2))
-// inside its circle; we keep that gap below a fiftieth of a pixel, so circles look round.
+// inside its circle; we keep that gap below a fiftieth of a device pixel, so circles
+// look round.
 constexpr double kArcTolerance = 0.02;
 constexpr int kMostArcChords = 4096;  // keeps absurd radii from costing absurd time
 
-// Segments are cut to the canvas grown by this margin before any pixel work: what lies
-// farther out cannot reach a pixel, and coordinates near the canvas keep the distance
-// arithmetic exact even when the caller passed 1e300.
+// Segments are cut to the canvas grown by this margin (in pen widths) before any pixel
+// work: what lies farther out cannot reach a pixel, and coordinates near the canvas
+// keep the distance arithmetic exact even when the caller passed 1e300.
 constexpr double kClipMargin = 2.0;
 
 struct Segment {
@@ -102,11 +105,20 @@ std::uint8_t mix(std::uint8_t from, std::uint8_t to, double alpha) {
 
 }  // namespace
 
-Canvas::Canvas(int width, int height) : pixels_(width, height, colors::kWhite) {}
+Canvas::Canvas(int width, int height, int scale) : width_(width), height_(height), scale_(1) {
+    setScale(scale);
+}
+
+void Canvas::setScale(int scale) {
+    if (scale < 1 || scale > kMaxScale) throw std::invalid_argument("Canvas: scale must be 1 to 4");
+    scale_ = scale;
+    pixels_ = Image(width_ * scale, height_ * scale, colors::kWhite);
+}
 
 Canvas::Point Canvas::apply(double x, double y) const {
     const Transform& m = transform_;
-    return {m.a * x + m.c * y + m.e, m.b * x + m.d * y + m.f};
+    const double k = scale_;
+    return {k * (m.a * x + m.c * y + m.e), k * (m.b * x + m.d * y + m.f)};
 }
 
 void Canvas::clearRect(double x, double y, double w, double h) {
@@ -116,23 +128,25 @@ void Canvas::clearRect(double x, double y, double w, double h) {
     const Transform& m = transform_;
     const double determinant = m.a * m.d - m.b * m.c;
     if (!std::isfinite(determinant) || determinant == 0.0) return;  // such a transform covers no area
-    auto to_rectangle = [&](double px, double py) {
-        px -= m.e;
-        py -= m.f;
+    const double k = scale_;
+    auto to_rectangle = [&](double px, double py) {  // from device pixels
+        px = px / k - m.e;
+        py = py / k - m.f;
         return Point{(m.d * px - m.c * py) / determinant, (m.a * py - m.b * px) / determinant};
     };
+    const int device_width = pixels_.width, device_height = pixels_.height;
     const Box rectangle{std::min(x, x + w), std::min(y, y + h), std::max(x, x + w), std::max(y, y + h)};
-    for (int j = 0; j < height(); ++j) {
-        const Point from = to_rectangle(-kClipMargin, j + 0.5);
-        const Point to = to_rectangle(width() + kClipMargin, j + 0.5);
+    for (int j = 0; j < device_height; ++j) {
+        const Point from = to_rectangle(-kClipMargin * k, j + 0.5);
+        const Point to = to_rectangle(device_width + kClipMargin * k, j + 0.5);
         const auto inside = clip({from.x, from.y, to.x, to.y}, rectangle);
         if (!inside) continue;
         const double xa = apply(inside->x0, inside->y0).x, xb = apply(inside->x1, inside->y1).x;
-        const int i0 = first_pixel(std::min(xa, xb), width()), i1 = end_pixel(std::max(xa, xb), width());
+        const int i0 = first_pixel(std::min(xa, xb), device_width), i1 = end_pixel(std::max(xa, xb), device_width);
         // The run's bytes lie side by side, and white is 255 in each of them.
         static_assert(colors::kWhite == Color{255, 255, 255, 255});
         if (i0 < i1) {
-            const auto row = pixels_.rgba.begin() + static_cast<std::ptrdiff_t>(j) * width() * 4;
+            const auto row = pixels_.rgba.begin() + static_cast<std::ptrdiff_t>(j) * device_width * 4;
             std::fill(row + i0 * 4, row + i1 * 4, std::uint8_t{255});
         }
     }
@@ -165,9 +179,10 @@ void Canvas::arc(double cx, double cy, double r, double a0, double a1, bool coun
     const double sweep = arc_sweep(a0, a1, counterclockwise);
     if (!std::isfinite(sweep)) return;  // angles too far apart for a double to tell the end
     int chords = 1;
-    if (r > kArcTolerance) {
+    const double device_r = r * scale_;
+    if (device_r > kArcTolerance) {
         // For absurd radii the widest angle rounds to 0, and `needed` to infinity or NaN.
-        const double widest_chord_angle = 2.0 * std::acos(1.0 - kArcTolerance / r);
+        const double widest_chord_angle = 2.0 * std::acos(1.0 - kArcTolerance / device_r);
         const double needed = std::ceil(std::abs(sweep) / widest_chord_angle);
         if (needed > 1.0) chords = static_cast<int>(std::min(needed, static_cast<double>(kMostArcChords)));
     }
@@ -193,7 +208,10 @@ void Canvas::stroke() {
     // 1. The path as straight segments, cut to the neighbourhood of the canvas. A segment
     //    with a NaN or infinite end has no place to draw; one of zero length has no
     //    direction, and the browser's flat-ended pen draws nothing for it.
-    const Box near_canvas{-kClipMargin, -kClipMargin, width() + kClipMargin, height() + kClipMargin};
+    const double reach = kPenReach * scale_;  // in device pixels, as everything below
+    const int device_width = pixels_.width, device_height = pixels_.height;
+    const double margin = kClipMargin * scale_;
+    const Box near_canvas{-margin, -margin, device_width + margin, device_height + margin};
     std::vector<Segment> segments;
     auto add = [&](Point a, Point b) {
         if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) return;
@@ -219,10 +237,10 @@ void Canvas::stroke() {
         top = std::min({top, s.y0, s.y1});
         bottom = std::max({bottom, s.y0, s.y1});
     }
-    const int mask_i0 = first_pixel(left - kPenReach, width());
-    const int mask_i1 = end_pixel(right + kPenReach, width());
-    const int mask_j0 = first_pixel(top - kPenReach, height());
-    const int mask_j1 = end_pixel(bottom + kPenReach, height());
+    const int mask_i0 = first_pixel(left - reach, device_width);
+    const int mask_i1 = end_pixel(right + reach, device_width);
+    const int mask_j0 = first_pixel(top - reach, device_height);
+    const int mask_j1 = end_pixel(bottom + reach, device_height);
     if (mask_i0 >= mask_i1 || mask_j0 >= mask_j1) return;
     const int mask_width = mask_i1 - mask_i0;
     std::vector<float> coverage(static_cast<std::size_t>(mask_width) * static_cast<std::size_t>(mask_j1 - mask_j0), 0.0f);
@@ -230,23 +248,23 @@ void Canvas::stroke() {
     for (const Segment& s : segments) {
         const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
         const double length_squared = dx * dx + dy * dy;
-        const int j0 = std::max(mask_j0, first_pixel(std::min(s.y0, s.y1) - kPenReach, height()));
-        const int j1 = std::min(mask_j1, end_pixel(std::max(s.y0, s.y1) + kPenReach, height()));
+        const int j0 = std::max(mask_j0, first_pixel(std::min(s.y0, s.y1) - reach, device_height));
+        const int j1 = std::min(mask_j1, end_pixel(std::max(s.y0, s.y1) + reach, device_height));
         for (int j = j0; j < j1; ++j) {
-            // Only the part of the segment within kPenReach of this row's centre line can
+            // Only the part of the segment within reach of this row's centre line can
             // light pixels of the row: find its x extent, so a long slanted segment costs
             // a few pixels per row rather than its whole bounding box.
             const double cy = j + 0.5;
             double t_low = 0.0, t_high = 1.0;
             if (dy != 0.0) {
-                const double ta = (cy - kPenReach - s.y0) / dy, tb = (cy + kPenReach - s.y0) / dy;
+                const double ta = (cy - reach - s.y0) / dy, tb = (cy + reach - s.y0) / dy;
                 t_low = std::max(0.0, std::min(ta, tb));
                 t_high = std::min(1.0, std::max(ta, tb));
                 if (t_low > t_high) continue;
             }
             const double xa = s.x0 + t_low * dx, xb = s.x0 + t_high * dx;
-            const int i0 = std::max(mask_i0, first_pixel(std::min(xa, xb) - kPenReach, width()));
-            const int i1 = std::min(mask_i1, end_pixel(std::max(xa, xb) + kPenReach, width()));
+            const int i0 = std::max(mask_i0, first_pixel(std::min(xa, xb) - reach, device_width));
+            const int i1 = std::min(mask_i1, end_pixel(std::max(xa, xb) + reach, device_width));
             float* row = &coverage[static_cast<std::size_t>(j - mask_j0) * static_cast<std::size_t>(mask_width)];
             for (int i = i0; i < i1; ++i) {
                 // Distance from the pixel centre to the nearest point of the segment: project
@@ -257,8 +275,8 @@ void Canvas::stroke() {
                 const double t = std::clamp((px * dx + py * dy) / length_squared, 0.0, 1.0);
                 const double ex = px - t * dx, ey = py - t * dy;
                 const double distance_squared = ex * ex + ey * ey;
-                if (distance_squared >= kPenReach * kPenReach) continue;
-                const float c = static_cast<float>(1.0 - std::sqrt(distance_squared) / kPenReach);
+                if (distance_squared >= reach * reach) continue;
+                const float c = static_cast<float>(1.0 - std::sqrt(distance_squared) / reach);
                 float& cell = row[i - mask_i0];
                 cell = std::max(cell, c);
             }

@@ -7,6 +7,14 @@
 // Coordinates are the canvas's: origin at the top-left corner, +x right, +y down,
 // one unit a pixel, pixel (i, j) covering [i, i+1) x [j, j+1) so its centre is at
 // (i + 0.5, j + 0.5). Anything outside the canvas is clipped, never an error.
+//
+// A canvas may have more device pixels than canvas pixels, as a browser's canvas on a
+// high-density screen does: with scale K each canvas unit covers K x K device pixels,
+// the pen is K device pixels wide and arcs get as many chords as their size on the
+// device needs. Drawing is then the same drawing at K times the detail, not a
+// magnified copy: a circle stays round where a copy would show its steps K times as
+// large. At scale 1 every computation is the one without a scale (a product with 1.0
+// is exact), so pictures do not change by a bit.
 
 #include <vector>
 
@@ -19,11 +27,18 @@ public:
     static constexpr int kDefaultWidth = 800;   // the book's mWidth
     static constexpr int kDefaultHeight = 450;  // the book's mHeight
 
-    explicit Canvas(int width = kDefaultWidth, int height = kDefaultHeight);
+    static constexpr int kMaxScale = 4;  // a page 4 times larger is 4720 x 1800 pixels already
 
-    int width() const { return pixels_.width; }
-    int height() const { return pixels_.height; }
+    explicit Canvas(int width = kDefaultWidth, int height = kDefaultHeight, int scale = 1);
+
+    // The size in canvas pixels, what the page's scripts draw in.
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int scale() const { return scale_; }
+    // The device pixels: width() * scale() by height() * scale().
     const Image& pixels() const { return pixels_; }
+    // A blank canvas of the same size with `scale` (1 to kMaxScale) device pixels a unit.
+    void setScale(int scale);
 
     // Erases to the page background (white, like a canvas on a blank page).
     void clearRect(double x, double y, double w, double h);
@@ -60,8 +75,9 @@ private:
         Transform transform;
         Color stroke_color;
     };
-    Point apply(double x, double y) const;
+    Point apply(double x, double y) const;  // canvas coordinates to device pixels
 
+    int width_, height_, scale_;
     Image pixels_;
     Color stroke_color_ = colors::kBlack;
     Transform transform_;

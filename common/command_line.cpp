@@ -10,7 +10,9 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "canvas.h"
 #include "gif_writer.h"
+#include "live_window.h"
 #include "random.h"
 #include "strict_parse.h"
 
@@ -79,6 +81,63 @@ bool gif_possible(bool gif_given, const std::string& program) {
     return false;
 }
 
+// The keys the stage declares, from its key list. A bad name there is the stage's
+// mistake, not the reader's.
+KeySet stage_keys(const StageDefaults& defaults) {
+    KeySet keys;
+    for (const KeyHelp& line : defaults.key_help) {
+        try {
+            keys.add(KeySet::parse(line.keys));
+        } catch (const KeyScriptError& error) {
+            throw std::logic_error("key list of " + defaults.id + ": " + error.what());
+        }
+    }
+    return keys;
+}
+
+// The end of --help: how to write a key script, and the stage's own keys.
+std::string help_footer(const StageDefaults& defaults) {
+    std::string footer =
+        "A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
+        "a token without @ comes at the frame of the one before.";
+    if (defaults.key_help.empty()) return footer + "\nKeys: a-z, 0-9, comma, up, down.";
+    std::size_t widest = 0;
+    for (const KeyHelp& line : defaults.key_help) widest = std::max(widest, line.keys.size());
+    footer += "\n\nThe keys of this stage, in a --keys script or live with --live:";
+    for (const KeyHelp& line : defaults.key_help) {
+        footer += "\n  " + line.keys + std::string(widest - line.keys.size() + 2, ' ') + line.meaning;
+    }
+    footer += "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
+              "Escape or closing the window ends the session.";
+    return footer;
+}
+
+// The program as the reader called it, with the options given that shape the run,
+// in the order of `given`.
+std::vector<std::string> replay_command(const CLI::App& app, int argc, const char* const* argv, const std::string& program,
+                                        const std::vector<std::pair<std::string, std::string>>& given) {
+    std::vector<std::string> command{argc >= 1 && argv != nullptr && argv[0] != nullptr ? argv[0] : program};
+    for (const auto& [name, value] : given) {
+        if (app.count(name) == 0) continue;
+        command.push_back(name);
+        command.push_back(value);
+    }
+    return command;
+}
+
+// Options that make pictures have no place in a live session, which writes none.
+void refuse_picture_options_when_live(const CLI::App& app) {
+    for (const char* name : {"--out", "--every", "--gif", "--gif-every"}) {
+        if (app.count(name) > 0) {
+            throw UsageError(std::string(name) +
+                             ": a --live session writes no pictures; record it with --record FILE and replay that");
+        }
+    }
+    if (app.count("--frames") > 0) {
+        throw UsageError("--frames: a --live session runs until Escape; --record FILE tells how many frames it ran");
+    }
+}
+
 std::string program_name(int argc, const char* const* argv, const StageDefaults& defaults) {
     if (argc < 1 || argv == nullptr || argv[0] == nullptr) return defaults.id;
     const std::string name = std::filesystem::path(argv[0]).filename().string();
@@ -103,9 +162,13 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     default_frame_ms << 1000.0 / 60.0;
     std::string frame_ms_text;  // read only when given, so the default stays exactly 1000/60
 
+    std::string scale_text = "1";
+    bool live = false;
+    std::string record_text, live_events_text, live_screenshot_text;
+    const KeySet keys_of_stage = stage_keys(defaults);
+
     CLI::App app(defaults.title, program);
-    app.footer("A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
-               "keys: a-z, 0-9, comma, up, down. A token without @ comes at the frame of the one before.");
+    app.footer(help_footer(defaults));
     // Unknown words stay in app.remaining() so we can name them ourselves.
     app.allow_extras();
     app.add_option("--out", out_text, "folder for the pictures (replaced by each run)")
@@ -126,6 +189,16 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         ->type_name("SCRIPT")->capture_default_str();
     app.add_option("--frame-ms", frame_ms_text, "simulated milliseconds per frame")
         ->type_name("MS")->default_str(default_frame_ms.str());
+    app.add_option("--scale", scale_text, "draw the page K times larger (1 to 4), lines and text included,"
+                                          " in the window and in the pictures")
+        ->type_name("K")->capture_default_str();
+    app.add_flag("--live", live, "play the page in a window, keys from the keyboard (Escape ends)");
+    app.add_option("--record", record_text, "with --live: write the session's key presses to FILE as a key script"
+                                             " and print the command that replays it")
+        ->type_name("FILE");
+    // Test hooks, hidden from --help (an empty group): see live_window.h.
+    app.add_option("--live-events", live_events_text)->group("");
+    app.add_option("--live-screenshot", live_screenshot_text)->group("");
 
     // Bound before parsing; std::map keeps references to its values valid as it grows.
     std::map<std::string, std::string> extra;
@@ -148,7 +221,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         // CLI11 would read "--gif=false" as turning the flag on or off by its value; a
         // switch with a value is more likely a slip, and --no-gif says it plainly.
         for (const std::string& argument : arguments) {
-            for (const std::string_view flag : {"--gif=", "--no-gif="}) {
+            for (const std::string_view flag : {"--gif=", "--no-gif=", "--live="}) {
                 if (argument.starts_with(flag)) {
                     throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
                                      in_quotes(argument) + ")");
@@ -158,6 +231,19 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         if (!parse_strictly(app, arguments)) return {std::nullopt, 0};
 
         Options options;
+        if (live) {
+            refuse_picture_options_when_live(app);
+            if (!live_window_supported()) throw UsageError(std::string(kNoLiveSupport));
+        }
+        for (const char* name : {"--record", "--live-events", "--live-screenshot"}) {
+            if (!live && app.count(name) > 0) throw UsageError(std::string(name) + ": only with --live");
+        }
+        for (const auto& [name, text] : {std::pair<const char*, const std::string&>{"--record", record_text},
+                                         {"--live-events", live_events_text},
+                                         {"--live-screenshot", live_screenshot_text}}) {
+            if (app.count(name) > 0 && text.empty()) throw UsageError(std::string(name) + ": must name a file (got \"\")");
+        }
+        options.scale = int_option("--scale", scale_text, 1, Canvas::kMaxScale);
         options.out_dir = out_text;
         if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
         options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
@@ -176,19 +262,43 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         } catch (const KeyScriptError& error) {
             throw UsageError(std::string("--keys: ") + error.what());
         }
+        options.stage_keys = keys_of_stage;
+        if (!keys_of_stage.empty()) {
+            if (const auto stray = options.keys.firstKeyOutside(keys_of_stage)) {
+                throw UsageError("--keys: " + in_quotes(key_name(*stray)) + " is not a key of this stage (its keys: " +
+                                 keys_of_stage.text() + ")");
+            }
+        }
         options.keys_text = keys_text;
         options.keys_given = app.count("--keys") > 0;
+        // A live session starts from the page as it loads; the reader plays it, after
+        // any presses of their own --keys script.
+        if (live && !options.keys_given) options.keys = KeyScript();
         // A press of the reader's own after the last frame would silently do nothing,
         // which hides a mistake. The default script may run past a shorter --frames:
         // asking for fewer frames than the demo needs is a fair request.
-        if (options.keys_given && options.keys.lastFrame() >= options.frames) {
+        if (!live && options.keys_given && options.keys.lastFrame() >= options.frames) {
             throw UsageError("--keys: a key is pressed before frame " + std::to_string(options.keys.lastFrame()) +
                              ", but --frames " + std::to_string(options.frames) + " runs only frames 0 to " +
                              std::to_string(options.frames - 1));
         }
         options.extra = extra;
+        if (live) {
+            options.live.on = true;
+            options.live.record = record_text;
+            options.live.events = live_events_text;
+            options.live.screenshot = live_screenshot_text;
+            options.live.title = defaults.title + " (" + defaults.id + ")";
+            std::vector<std::pair<std::string, std::string>> shaping{
+                {"--seed", seed_text}, {"--frame-ms", frame_ms_text}, {"--scale", scale_text}};
+            for (const auto& [name, value] : extra) shaping.emplace_back(name, value);
+            options.live.replay_command = replay_command(app, argc, argv, program, shaping);
+            // The stage's pictures; for a stage that saves none but final.png, one a half second.
+            options.live.replay_every = defaults.every > 0 ? defaults.every : 30;
+            options.live.replay_gif = !defaults.gif && gif_supported();
+        }
         // Last, so the note about a skipped GIF never comes with an error about another option.
-        options.gif = want_gif && gif_possible(gif_flag, program);
+        options.gif = !live && want_gif && gif_possible(gif_flag, program);
         return {std::move(options), 0};
     } catch (const UsageError& error) {
         std::cerr << program << ": " << error.what() << '\n';

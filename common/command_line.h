@@ -1,7 +1,7 @@
 #pragma once
 // One command-line shape for every stage (CLI11):
 //   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS
-//   --gif  --no-gif  --gif-every N  --help
+//   --gif  --no-gif  --gif-every N  --scale K  --live  --record FILE  --help
 // plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
 // list them in StageDefaults::extra_options and read their values from Options::extra.
 // CLI11 stays inside command_line.cpp, so stages never see it.
@@ -26,6 +26,12 @@ struct ExtraOption {
     std::string default_value;  // the value when the option is not given ("" for none)
 };
 
+// A line of the stage's key list, as its README gives it: the keys, and what they do.
+struct KeyHelp {
+    std::string keys;     // names and ranges as KeySet::parse reads them: "0-9 up down", "w a s d"
+    std::string meaning;  // "select an object"
+};
+
 // What a stage's program does when run with no options.
 struct StageDefaults {
     std::string id;           // "s1_1": names the default output folder out/<id>/
@@ -36,6 +42,26 @@ struct StageDefaults {
     bool gif = false;         // also write animation.gif (--no-gif turns it off again)
     int gif_every = 2;        // one GIF picture every N-th frame
     std::vector<ExtraOption> extra_options;  // the stage's own options, if any
+    // Every key the page's script reacts to: --help lists them, and a key script that
+    // presses any other key is refused. Empty: any key may be pressed.
+    std::vector<KeyHelp> key_help;
+};
+
+// A --live session: the page in a window, played from the keyboard (live.h).
+struct LiveOptions {
+    bool on = false;                    // --live
+    std::filesystem::path record;       // --record FILE: where the session's key script goes ("" for nowhere)
+    std::string title;                  // the window's title
+    // The command that replays a recorded session, but for its --keys, --frames and
+    // picture options: the program as it was called, and every option given that shapes
+    // the run (--seed, --frame-ms, --scale, the stage's own options).
+    std::vector<std::string> replay_command;
+    int replay_every = 30;              // the --every the printed replay command uses
+    bool replay_gif = false;            // whether it adds --gif (the stage writes no GIF by default)
+    // Test hooks, hidden from --help (live_window.h): key events to push into the
+    // window's event queue, and where to save the last picture the window showed.
+    std::filesystem::path events;
+    std::filesystem::path screenshot;
 };
 
 struct Options {
@@ -49,6 +75,9 @@ struct Options {
     std::string keys_text;
     bool keys_given = false;  // --keys was on the command line (not the stage's default script)
     double frame_ms = 1000.0 / 60.0;
+    int scale = 1;       // device pixels per canvas pixel, along each axis (--scale)
+    KeySet stage_keys;   // the keys the stage's page reacts to (empty: any)
+    LiveOptions live;
     // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
     std::map<std::string, std::string> extra;
 };
@@ -57,8 +86,10 @@ struct Options {
 // program should stop now (0 after --help, 2 after a bad option, whose one-line
 // message has already been printed to stderr, prefixed by the program's file name).
 // A key scripted for a frame the run never reaches is a bad option too, since it would
-// silently do nothing, and so are --gif-every without a GIF and --gif in a build
-// without giflib (one line: gif_writer.h's kNoGifSupport). When the GIF is only the
+// silently do nothing, and so are a key the stage does not handle, --gif-every without
+// a GIF, --gif in a build without giflib (one line: gif_writer.h's kNoGifSupport),
+// --live in a build without SDL2 (live_window.h's kNoLiveSupport), picture options with
+// --live (a live session writes none: it records keys to replay), and --record without it. When the GIF is only the
 // stage's default, such a build says on stderr that it skips the GIF and runs on.
 struct ParsedCommandLine {
     std::optional<Options> options;

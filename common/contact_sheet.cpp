@@ -57,7 +57,7 @@ Image shrink(const Image& picture, int factor) {
     return small;
 }
 
-ContactSheet::ContactSheet(int pictures) : pictures_(pictures) {
+ContactSheet::ContactSheet(int pictures, int page_scale) : pictures_(pictures), page_scale_(page_scale) {
     if (pictures < 1) throw std::invalid_argument("ContactSheet: needs at least one picture");
 }
 
@@ -70,7 +70,7 @@ void ContactSheet::add(const Image& page, std::string_view label) {
         throw std::invalid_argument("ContactSheet: every page must have the size of the first");
     }
 
-    const Image thumbnail = shrink(page, kThumbnailScale);
+    const Image thumbnail = shrink(page, kThumbnailScale * page_scale_);
     const int cell_width = thumbnail.width + kSheetMargin;
     const int cell_height = kLabelHeight + thumbnail.height + kSheetMargin;
     if (added_ == 0) {

@@ -35,9 +35,11 @@ Image shrink(const Image& picture, int factor);
 // size, when the first page shows how big a page is.
 class ContactSheet {
 public:
-    explicit ContactSheet(int pictures);
+    // `page_scale`: the pages are drawn that many times larger (--scale), and shrunk
+    // that many times more, so the sheet looks the same at every scale.
+    explicit ContactSheet(int pictures, int page_scale = 1);
 
-    // Adds `page` shrunk by kThumbnailScale in the next cell. Every page must have the
+    // Adds `page` shrunk by kThumbnailScale (times the page scale) in the next cell. Every page must have the
     // size of the first; adding more than the promised number is an error.
     void add(const Image& page, std::string_view label);
 
@@ -47,6 +49,7 @@ public:
 
 private:
     int pictures_;
+    int page_scale_;
     int added_ = 0;
     int page_width_ = 0, page_height_ = 0;
     Image sheet_;

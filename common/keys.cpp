@@ -109,6 +109,65 @@ KeyScript KeyScript::parse(std::string_view script) {
     return result;
 }
 
+KeySet KeySet::parse(std::string_view names) {
+    KeySet set;
+    std::size_t pos = 0;
+    while (pos < names.size()) {
+        if (is_space(names[pos])) {
+            ++pos;
+            continue;
+        }
+        std::size_t end = pos;
+        while (end < names.size() && !is_space(names[end])) ++end;
+        const std::string_view word = names.substr(pos, end - pos);
+        pos = end;
+
+        // "x-y" with one letter or digit at each end is a range; "-" alone is no key.
+        std::optional<Key> first, last;
+        if (word.size() == 3 && word[1] == '-') {
+            first = parse_key(word.substr(0, 1));
+            last = parse_key(word.substr(2, 1));
+            const bool same_kind = first && last && digit_value(*first).has_value() == digit_value(*last).has_value() &&
+                                   *first != Key::Comma && *last != Key::Comma;
+            if (!same_kind || *first > *last) {
+                throw KeyScriptError("bad key range \"" + std::string(word) + "\" (a range is a-z or 0-9 style)");
+            }
+        } else {
+            first = last = parse_key(word);
+            if (!first) throw KeyScriptError("unknown key \"" + std::string(word) + "\" (" + kValidKeys + ")");
+        }
+        for (int k = static_cast<int>(*first); k <= static_cast<int>(*last); ++k) {
+            set.members_.set(static_cast<std::size_t>(k));
+        }
+    }
+    return set;
+}
+
+std::string KeySet::text() const {
+    std::string text;
+    auto append = [&](const std::string& part) {
+        if (!text.empty()) text += ", ";
+        text += part;
+    };
+    for (int k = 0; k < kKeyCount; ++k) {
+        const Key key = static_cast<Key>(k);
+        if (!contains(key)) continue;
+        // Three or more digits in a row read best as a range; letters are listed one by
+        // one, since "d-h" hides which keys a reader can press.
+        int end = k + 1;
+        if (digit_value(key)) {
+            while (end < kKeyCount && digit_value(static_cast<Key>(end)) && contains(static_cast<Key>(end))) ++end;
+        }
+        if (end - k >= 3) {
+            append(key_name(key) + "-" + key_name(static_cast<Key>(end - 1)));
+            k = end - 1;
+        } else {
+            append(key_name(key));
+        }
+    }
+    return text;
+}
+
 std::vector<Key> KeyScript::pressesAt(int frame) const {
     const auto found = presses_.find(frame);
     return found == presses_.end() ? std::vector<Key>{} : found->second;
@@ -116,6 +175,38 @@ std::vector<Key> KeyScript::pressesAt(int frame) const {
 
 int KeyScript::lastFrame() const {
     return presses_.empty() ? -1 : presses_.rbegin()->first;
+}
+
+std::optional<Key> KeyScript::firstKeyOutside(const KeySet& keys) const {
+    for (const auto& [frame, pressed] : presses_) {
+        for (const Key key : pressed) {
+            if (!keys.contains(key)) return key;
+        }
+    }
+    return std::nullopt;
+}
+
+void KeyScript::press(int frame, Key key) { presses_[frame].push_back(key); }
+
+std::string KeyScript::text() const {
+    std::string text;
+    for (const auto& [frame, pressed] : presses_) {
+        std::size_t i = 0;
+        while (i < pressed.size()) {
+            // A run longer than parse() takes as one count is written as several tokens.
+            std::size_t repeat = i + 1;
+            while (repeat < pressed.size() && pressed[repeat] == pressed[i] &&
+                   repeat - i < static_cast<std::size_t>(kMaxCount)) {
+                ++repeat;
+            }
+            if (!text.empty()) text += ' ';
+            text += key_name(pressed[i]);
+            if (repeat - i > 1) text += '*' + std::to_string(repeat - i);
+            text += '@' + std::to_string(frame);
+            i = repeat;
+        }
+    }
+    return text;
 }
 
 }  // namespace browser

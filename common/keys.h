@@ -9,6 +9,8 @@
 //          frame of the token before it (frame 0 at the start)
 // Example: "f*3 g@10 up e*5@20"
 
+#include <bitset>
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -24,6 +26,8 @@ enum class Key {
     Comma, Up, Down,
 };
 
+inline constexpr int kKeyCount = static_cast<int>(Key::Down) + 1;
+
 // The key's name as a script writes it ("f", "7", "comma", "up").
 std::string key_name(Key key);
 std::optional<Key> parse_key(std::string_view name);
@@ -32,6 +36,26 @@ std::optional<int> digit_value(Key key);
 
 struct KeyScriptError : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
+};
+
+// The keys one page's script reacts to: what its --help lists, what a key script for it
+// may press, and what its live window passes on from the keyboard.
+class KeySet {
+public:
+    KeySet() = default;
+    // Key names separated by spaces; "a-z" and "0-9" style ranges stand for every key
+    // between their two ends ("0-9 up down f g"). Throws KeyScriptError naming a bad word.
+    static KeySet parse(std::string_view names);
+
+    bool contains(Key key) const { return members_.test(static_cast<std::size_t>(key)); }
+    bool empty() const { return members_.none(); }
+    void add(const KeySet& other) { members_ |= other.members_; }
+    // The members in the order of Key, letters first, three or more neighbouring
+    // digits as a range: "a, d, e, f, 0-9, comma, up".
+    std::string text() const;
+
+private:
+    std::bitset<kKeyCount> members_;
 };
 
 class KeyScript {
@@ -49,6 +73,16 @@ public:
     // The last frame any key is pressed at (-1 for an empty script).
     int lastFrame() const;
     bool empty() const { return presses_.empty(); }
+    // The first key of the script, in frame order, that `keys` does not hold.
+    std::optional<Key> firstKeyOutside(const KeySet& keys) const;
+
+    // Adds a press before `frame`, after the ones already there.
+    void press(int frame, Key key);
+    // The script as text that parse() reads back to the same presses: every token
+    // carries its frame, and a key pressed several times in a row is one KEY*COUNT
+    // token ("f@12 d*3@40 comma@40"). "" for an empty script.
+    std::string text() const;
+    friend bool operator==(const KeyScript&, const KeyScript&) = default;
 
 private:
     std::map<int, std::vector<Key>> presses_;

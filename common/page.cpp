@@ -24,6 +24,10 @@ constexpr int kLineHeight = 9 * kTextScale;
 constexpr float kLetterSpacing = -1.0f;  // font units: tighter than the default, still clear;
                                          // a panel line then holds about 38 letters
 constexpr int kPanelMargin = 10;
+// The live window's status line: a light gray band, so it reads as the window's and
+// not the page's.
+constexpr int kStatusPadding = 6;
+constexpr Color kStatusBackground{224, 224, 224, 255};
 
 // The font knows printable ASCII only; anything else would index past its tables.
 std::string printable(std::string_view line) {
@@ -66,7 +70,7 @@ std::vector<std::string> wrap(std::string line, int max_width) {
 // The font hands back quads (four corners each, x y z floats then 4 colour bytes);
 // with kTextScale whole, every quad covers whole pixels, so each is a plain rectangle
 // fill.
-void draw_text(Image& picture, std::string_view line, int x, int y, Color color) {
+void draw_text(Image& picture, std::string_view line, int x, int y, Color color, int scale) {
     std::string text = printable(line);  // also a mutable copy, which the font's functions take
     constexpr std::size_t kVertexBytes = 16, kQuadBytes = 4 * kVertexBytes;
     constexpr std::size_t kMostQuadsPerLetter = 16;
@@ -79,10 +83,11 @@ void draw_text(Image& picture, std::string_view line, int x, int y, Color color)
         const char* quad = quads.data() + static_cast<std::size_t>(q) * kQuadBytes;
         std::memcpy(top_left, quad, sizeof top_left);
         std::memcpy(bottom_right, quad + 2 * kVertexBytes, sizeof bottom_right);
-        const int x0 = x + static_cast<int>(top_left[0] * kTextScale);
-        const int y0 = y + static_cast<int>(top_left[1] * kTextScale);
-        const int x1 = x + static_cast<int>(bottom_right[0] * kTextScale);
-        const int y1 = y + static_cast<int>(bottom_right[1] * kTextScale);
+        const int units = kTextScale * scale;  // device pixels a font unit
+        const int x0 = x + static_cast<int>(top_left[0] * units);
+        const int y0 = y + static_cast<int>(top_left[1] * units);
+        const int x1 = x + static_cast<int>(bottom_right[0] * units);
+        const int y1 = y + static_cast<int>(bottom_right[1] * units);
         for (int j = y0; j < y1; ++j) {
             for (int i = x0; i < x1; ++i) picture.set(i, j, color);
         }
@@ -91,34 +96,49 @@ void draw_text(Image& picture, std::string_view line, int x, int y, Color color)
 
 Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
-    Image page(canvas.width + kPanelWidth, canvas.height, colors::kWhite);
+    const int scale = document.canvas.scale();
+    Image page(canvas.width + kPanelWidth * scale, canvas.height, colors::kWhite);
     page.paste(canvas, 0, 0);
 
-    // The frame lies on the canvas's outermost pixels, so the page keeps the canvas size.
+    // The frame lies on the canvas's outermost pixels (its outermost `scale` rows and
+    // columns of device pixels), so the page keeps the canvas size.
     for (int i = 0; i < canvas.width; ++i) {
-        page.set(i, 0, kFrameColor);
-        page.set(i, canvas.height - 1, kFrameColor);
+        for (int t = 0; t < scale; ++t) {
+            page.set(i, t, kFrameColor);
+            page.set(i, canvas.height - 1 - t, kFrameColor);
+        }
     }
     for (int j = 0; j < canvas.height; ++j) {
-        page.set(0, j, kFrameColor);
-        page.set(canvas.width - 1, j, kFrameColor);
+        for (int t = 0; t < scale; ++t) {
+            page.set(t, j, kFrameColor);
+            page.set(canvas.width - 1 - t, j, kFrameColor);
+        }
     }
 
     // The echo panel: one text line per '\n', wrapped to the panel, cut at its bottom.
-    const int text_left = canvas.width + kPanelMargin;
+    // Laid out in page pixels, drawn in device pixels.
+    const int text_left = document.canvas.width() + kPanelMargin;
     const int text_width_limit = kPanelWidth - 2 * kPanelMargin;
     int y = kPanelMargin;
     std::string_view echo = document.ui_echo;
-    while (!echo.empty() && y < page.height) {
+    while (!echo.empty() && y < document.canvas.height()) {
         const std::size_t end = echo.find('\n');
         const std::string line = printable(echo.substr(0, end));
         echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
         for (const std::string& piece : wrap(line, text_width_limit)) {
-            draw_text(page, piece, text_left, y, kTextColor);
+            draw_text(page, piece, text_left * scale, y * scale, kTextColor, scale);
             y += kLineHeight;
         }
     }
     return page;
+}
+
+Image with_status_line(const Image& page, std::string_view status, int scale) {
+    const int band = (kLineHeight + kStatusPadding) * scale;
+    Image picture(page.width, page.height + band, kStatusBackground);
+    picture.paste(page, 0, 0);
+    draw_text(picture, status, kPanelMargin * scale, page.height + (kStatusPadding / 2 + 2) * scale, kTextColor, scale);
+    return picture;
 }
 
 }  // namespace browser

@@ -13,6 +13,11 @@ const browser::StageDefaults kStage{
     .keys = "f g f g f g f g f f g",
     .frames = 1,
     .every = 0,
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"f", "draw a random rectangle"},
+        {"g", "draw a random circle"},
+    },
 };
 
 constexpr const char* kHelp =
@@ -40,7 +45,7 @@ int main(int argc, char** argv) {
     if (!command_line.options) return command_line.exit_status;
     const browser::Options& options = *command_line.options;
 
-    browser::Window window(options.frame_ms);
+    browser::Window window(options);
     window.document.ui_echo = kHelp;
     browser::Random random(options.seed);
 

@@ -14,6 +14,12 @@ const browser::StageDefaults kStage{
     .keys = "f g f g f g f 7",
     .frames = 1,
     .every = 0,
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"0-9", "select the object with that number"},
+        {"up down", "select the object before / after"},
+        {"f g", "a random rectangle / circle"},
+    },
 };
 
 class Page final : public browser::PageScripts {
@@ -34,7 +40,7 @@ int main(int argc, char** argv) {
     if (!command_line.options) return command_line.exit_status;
     const browser::Options& options = *command_line.options;
 
-    browser::Window window(options.frame_ms);
+    browser::Window window(options);
     browser::Random random(options.seed);
 
     engine::Core core(window);

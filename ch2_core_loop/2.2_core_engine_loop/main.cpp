@@ -16,6 +16,15 @@ const browser::StageDefaults kStage{
     .keys = "a*20 f d*8 g d*8 f d*8 g d*8 f 5 e*3 7 q*4 9 e*2 h 0 w*6@60 a*10 g d*10 f",
     .frames = 240,
     .every = 30,
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"0-9 up down", "select an object: by its number, the one before, the one after"},
+        {"w a s d", "move the selected object 10 px up, left, down, right"},
+        {"q e", "turn it -0.1 / +0.1 rad"},
+        {"h", "fix the selected object in place, or free it"},
+        {"f g", "a new rectangle / circle at the selected object"},
+        {"r", "reset: keep only the first five objects"},
+    },
 };
 
 class Page final : public browser::PageScripts {
@@ -36,7 +45,7 @@ int main(int argc, char** argv) {
     if (!command_line.options) return command_line.exit_status;
     const browser::Options& options = *command_line.options;
 
-    browser::Window window(options.frame_ms);
+    browser::Window window(options);
     browser::Random random(options.seed);
 
     engine::Core core(window);

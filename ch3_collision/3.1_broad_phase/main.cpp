@@ -18,6 +18,14 @@ const browser::StageDefaults kStage{
     .keys = "a*20 f g d*20 f 7 e*4 0 w*4 g d*25 g 8@40 w*2 9 a*42@80 s*4 0",
     .frames = 120,
     .every = 40,
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"0-9 up down", "select an object: by its number, the one before, the one after"},
+        {"w a s d", "move the selected object 10 px up, left, down, right"},
+        {"q e", "turn it -0.1 / +0.1 rad"},
+        {"f g", "a new rectangle / circle at the selected object"},
+        {"r", "reset: keep only the first five objects"},
+    },
 };
 
 class Page final : public browser::PageScripts {
@@ -38,7 +46,7 @@ int main(int argc, char** argv) {
     if (!command_line.options) return command_line.exit_status;
     const browser::Options& options = *command_line.options;
 
-    browser::Window window(options.frame_ms);
+    browser::Window window(options);
     browser::Random random(options.seed);
 
     engine::Core core(window);

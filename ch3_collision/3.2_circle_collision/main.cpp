@@ -18,6 +18,14 @@ const browser::StageDefaults kStage{
     .keys = "a*25 g g d*20 g d*3 g d*18 f g 8@40 s*2 e*4@80 a 0",
     .frames = 120,
     .every = 40,
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"0-9 up down", "select an object: by its number, the one before, the one after"},
+        {"w a s d", "move the selected object 10 px up, left, down, right"},
+        {"q e", "turn it -0.1 / +0.1 rad"},
+        {"f g", "a new rectangle / circle at the selected object"},
+        {"r", "reset: keep only the first five objects"},
+    },
 };
 
 class Page final : public browser::PageScripts {
@@ -38,7 +46,7 @@ int main(int argc, char** argv) {
     if (!command_line.options) return command_line.exit_status;
     const browser::Options& options = *command_line.options;
 
-    browser::Window window(options.frame_ms);
+    browser::Window window(options);
     browser::Random random(options.seed);
 
     engine::Core core(window);

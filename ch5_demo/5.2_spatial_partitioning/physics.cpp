@@ -112,34 +112,27 @@ std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& 
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
-    if (world.broad_phase != broad_phase_kind_) {
-        broad_phase_ = makeBroadPhase(world.broad_phase);
-        broad_phase_kind_ = world.broad_phase;
-    }
-    broad_phase_->startStep(shapes);
-    for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
-}
-
-// Every pair is resolved as soon as it is found, so the pairs after it already see the
-// shapes where that correction left them. The broad phase hands out each row's
-// candidates in ascending order, so pairs are met in the book's order whichever it is.
-void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
-    collisions_.clear();
-    BroadPhase& broad_phase = *broad_phase_;
-    for (std::size_t i = 0; i < shapes.size(); ++i) {
-        for (std::size_t j = broad_phase.first(i); j < shapes.size(); j = broad_phase.next(i, j)) {
+    if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
+    broad_phase_.startStep(shapes);
+    for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
+        // The record keeps what the last pass found.
+        const bool last_pass = pass + 1 == world.relaxation_iterations;
+        // Every pair is resolved as soon as it is found, so the pairs after it already
+        // see the shapes where that correction left them. The broad phase walks each
+        // row's partners in ascending order, so pairs are met in the book's order
+        // whichever it is.
+        broad_phase_.pass([&](std::size_t i, std::size_t j) {
             RigidShape& a = *shapes[i];
             RigidShape& b = *shapes[j];
-            if (!broad_phase.mayTouch(a, b)) continue;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
-            if (!info) continue;
+            if (!info) return false;
             // Nothing draws the record from 4.3 on: it keeps the pairs the resolution
             // works on, for the tests, so two static shapes lying in each other are
             // left out of it.
-            if (!(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
+            if (last_pass && !(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
             resolveCollision(a, b, *info, world);
-            broad_phase.moved(i, j);
-        }
+            return true;
+        });
     }
 }
 

@@ -17,19 +17,24 @@ namespace engine {
 
 using browser::Vec2;
 
+// Written inline, here: the narrow phase makes one for every pair that collides, and
+// an out-of-line constructor would pass its numbers through memory on every one.
 class CollisionInfo {
 public:
     CollisionInfo() = default;
-    CollisionInfo(double depth, Vec2 normal, Vec2 start);
+    CollisionInfo(double depth, Vec2 normal, Vec2 start) : depth_(depth), normal_(normal), start_(start) {}
 
     double depth() const { return depth_; }
     Vec2 normal() const { return normal_; }
     Vec2 start() const { return start_; }
-    Vec2 end() const;
+    Vec2 end() const { return start_ + normal_ * depth_; }
 
     // The same overlap seen from the other shape: the normal turns round, and start
     // and end swap, so the segment stays where it is.
-    void changeDir();
+    void changeDir() {
+        start_ = end();
+        normal_ = -normal_;
+    }
 
 private:
     double depth_ = 0.0;

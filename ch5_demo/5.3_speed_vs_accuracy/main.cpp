@@ -30,6 +30,23 @@ const browser::StageDefaults kStage{
         {"--scene", "FILE", "build the world from this JSON scene file instead of the book's scene", ""},
         {"--dump", "FILE", "write every body's state after every fixed step to this CSV file", ""},
     },
+    // Every key user_control.cpp reacts to, as the README lists them.
+    .key_help = {
+        {"0-9 up down", "select an object: by its number, the one before, the one after"},
+        {"w a s d", "move the selected object 10 px up, left, down, right"},
+        {"q e", "turn it -0.1 / +0.1 rad"},
+        {"i k", "its velocity -1 / +1 px/s along y"},
+        {"j l", "its velocity -1 / +1 px/s along x"},
+        {"u o", "its angular velocity -0.1 / +0.1 rad/s"},
+        {"z x", "its mass -1 / +1 (0 makes it static)"},
+        {"c v", "its friction -0.01 / +0.01"},
+        {"b n", "its restitution -0.01 / +0.01"},
+        {"comma", "movement on / off"},
+        {"m", "positional correction on / off"},
+        {"h", "excite: a random velocity for every moving shape"},
+        {"f g", "a new rectangle / circle at the selected object"},
+        {"r", "reset: keep only the first seven objects"},
+    },
 };
 
 class Page final : public browser::PageScripts {
@@ -87,7 +104,7 @@ int main(int argc, char** argv) {
     // untouched unless --keys says otherwise.
     if (scene && !options.keys_given) options.keys = browser::KeyScript();
 
-    browser::Window window(options.frame_ms,
+    browser::Window window(options,
                            browser::Document{browser::Canvas(pixels(settings.width), pixels(settings.height))});
     browser::Random random(options.seed);
 

@@ -62,14 +62,11 @@ public:
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.
-    const PairStatistics& pairStatistics() const { return broad_phase_->statistics(); }
+    const PairStatistics& pairStatistics() const { return broad_phase_.statistics(); }
 
 private:
-    void relaxationPass(ShapeList shapes, const WorldSettings& world);
-
     std::vector<Collision> collisions_;
-    std::unique_ptr<BroadPhase> broad_phase_ = makeBroadPhase(BroadPhaseKind::bounding_circle);
-    BroadPhaseKind broad_phase_kind_ = BroadPhaseKind::bounding_circle;
+    BroadPhase broad_phase_;
 };
 
 }  // namespace engine

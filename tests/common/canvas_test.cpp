@@ -8,9 +8,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "canvas.h"
+#include "contact_sheet.h"
 #include "near.h"
 #include "page.h"
 
@@ -475,4 +478,122 @@ TEST_CASE("page: the canvas framed on the left, the echo text in a panel on the 
     }
     CHECK(inked_rows > 50);  // text all the way down the 120 px panel, not just one line
     CHECK(ink_right_of_text == 0);
+}
+
+TEST_CASE("canvas: at scale K a canvas pixel is K x K device pixels, and the canvas size stays") {
+    Canvas canvas(40, 30, 3);
+    CHECK(canvas.width() == 40);
+    CHECK(canvas.height() == 30);
+    CHECK(canvas.scale() == 3);
+    CHECK(canvas.pixels().width == 120);
+    CHECK(canvas.pixels().height == 90);
+    CHECK(all_white(canvas));
+    canvas.strokeRect(5, 5, 10, 10);
+    canvas.setScale(2);  // blanks it
+    CHECK(canvas.pixels().width == 80);
+    CHECK(all_white(canvas));
+    CHECK_THROWS_AS(canvas.setScale(0), std::invalid_argument);
+    CHECK_THROWS_AS(Canvas(10, 10, Canvas::kMaxScale + 1), std::invalid_argument);
+}
+
+TEST_CASE("canvas: at scale 2 the pen is 2 device pixels wide, and lines land at twice their place") {
+    // The line y = 10.5 from x = 10 to 30 is y = 21 on the device, from x = 20 to 60.
+    // Pen reach 2: a row whose centre is d away gets 1 - d / 2 of the ink, so rows 20
+    // and 21 (d = 0.5) get 0.75, rows 19 and 22 (d = 1.5) 0.25 and rows 18 and 23
+    // (d = 2.5) none: black over white leaves 255 (1 - c), rounded: 64, 191, 255.
+    Canvas canvas(40, 30, 2);
+    canvas.beginPath();
+    canvas.moveTo(10, 10.5);
+    canvas.lineTo(30, 10.5);
+    canvas.stroke();
+    for (const int i : {24, 40, 55}) {
+        INFO("device column " << i);
+        CHECK(grey(canvas, i, 18) == 255);
+        CHECK(grey(canvas, i, 19) == 191);
+        CHECK(grey(canvas, i, 20) == 64);
+        CHECK(grey(canvas, i, 21) == 64);
+        CHECK(grey(canvas, i, 22) == 191);
+        CHECK(grey(canvas, i, 23) == 255);
+    }
+    // Under a transform the scale comes last: translate(5, 0) moves the line 10 device px.
+    Canvas moved(40, 30, 2);
+    moved.translate(5, 0);
+    moved.beginPath();
+    moved.moveTo(10, 10.5);
+    moved.lineTo(30, 10.5);
+    moved.stroke();
+    for (int j = 15; j < 26; ++j) CHECK(grey(moved, 50, j) == grey(canvas, 40, j));
+}
+
+TEST_CASE("canvas: at scale 2 a circle is drawn round at twice its radius") {
+    // Radius 10 at (20, 15) is radius 20 at (40, 30) on the device. Near each point of
+    // that circle some pixel centre lies within 0.71 device px of it, so it has at least
+    // 1 - 0.71 / 2 of the ink: 255 * 0.355 = 91 at most.
+    Canvas canvas(40, 30, 2);
+    canvas.beginPath();
+    canvas.arc(20, 15, 10, 0, 2 * kPi);
+    canvas.stroke();
+    for (int step = 0; step < 16; ++step) {
+        const double angle = step * kPi / 8;
+        INFO("angle " << angle);
+        CHECK(darkest_near(canvas, 40 + 20 * std::cos(angle), 30 + 20 * std::sin(angle)) <= 91);
+        // Halfway between centre and ring, and 4 device px outside it: no ink (reach 2).
+        CHECK(grey_at_point(canvas, 40 + 10 * std::cos(angle), 30 + 10 * std::sin(angle)) == 255);
+        CHECK(grey_at_point(canvas, 40 + 24 * std::cos(angle), 30 + 24 * std::sin(angle)) == 255);
+    }
+}
+
+TEST_CASE("canvas: clearRect at scale 2 erases the rectangle's device pixels") {
+    Canvas canvas(10, 10, 2);
+    for (int row = 0; row < 20; ++row) {  // ink on every device row
+        canvas.beginPath();
+        canvas.moveTo(0, row * 0.5 + 0.25);
+        canvas.lineTo(10, row * 0.5 + 0.25);
+        canvas.stroke();
+    }
+    canvas.clearRect(2, 2, 3, 3);  // device pixels 4 to 9 in both directions
+    for (int j = 0; j < 20; ++j) {
+        for (int i = 0; i < 20; ++i) {
+            const bool inside = i >= 4 && i < 10 && j >= 4 && j < 10;
+            INFO("device pixel " << i << ", " << j);
+            CHECK((grey(canvas, i, j) == 255) == inside);
+        }
+    }
+}
+
+TEST_CASE("page: at scale 2 the frame, the panel and its text are twice as large") {
+    // Frame and text cover whole blocks of 2 x 2 device pixels, so the page at scale 2,
+    // shrunk by 2 (each pixel the mean of a block), is the page at scale 1 exactly; and
+    // the text wraps where it wraps at scale 1.
+    const std::string echo = "Hello\n" + std::string(60, 'W') + " end\nlast";
+    browser::Document small{Canvas(200, 120), echo};
+    browser::Document large{Canvas(200, 120, 2), echo};
+    const browser::Image page = browser::render_page(small);
+    const browser::Image page2 = browser::render_page(large);
+    REQUIRE(page2.width == 2 * page.width);
+    REQUIRE(page2.height == 2 * page.height);
+    CHECK(page2.at(1, 100) == browser::colors::kGray);  // the frame is 2 device pixels thick
+    CHECK(page2.at(2, 100) == browser::colors::kWhite);
+    const browser::Image shrunk = browser::shrink(page2, 2);
+    CHECK(shrunk.rgba == page.rgba);
+}
+
+TEST_CASE("page: the live window's status line goes under the page, which stays as it is") {
+    browser::Document document{Canvas(200, 120), "echo"};
+    for (const int scale : {1, 3}) {
+        document.canvas.setScale(scale);
+        const browser::Image page = browser::render_page(document);
+        const browser::Image picture = browser::with_status_line(page, "frame 12", scale);
+        REQUIRE(picture.width == page.width);
+        REQUIRE(picture.height == page.height + 24 * scale);
+        for (int y = 0; y < page.height; y += 7) {
+            for (int x = 0; x < page.width; x += 5) REQUIRE(picture.at(x, y) == page.at(x, y));
+        }
+        int ink_in_band = 0;
+        for (int y = page.height; y < picture.height; ++y) {
+            for (int x = 0; x < picture.width; ++x) ink_in_band += picture.at(x, y) == browser::colors::kBlack;
+        }
+        CHECK(ink_in_band > 20 * scale * scale);
+        CHECK(picture.at(picture.width - 1, picture.height - 1) == Color{224, 224, 224, 255});
+    }
 }

@@ -8,6 +8,7 @@
 
 #include "command_line.h"
 #include "gif_writer.h"
+#include "live_window.h"
 #include "random.h"
 
 using browser::Key;
@@ -275,4 +276,101 @@ TEST_CASE("command_line: a stage can write a GIF by default") {
     CHECK_FALSE(off.parsed.options->gif);
     CHECK(off.err.empty());
     check_rejected({"--no-gif", "--gif-every", "4"}, "--gif-every", stage);
+}
+
+namespace {
+
+// A stage that declares its keys.
+browser::StageDefaults with_keys() {
+    browser::StageDefaults stage = kDefaults;
+    stage.key_help = {{"0-9 up down", "select"}, {"f g", "a new shape"}};
+    return stage;
+}
+
+}  // namespace
+
+TEST_CASE("command_line: a key script may press only the stage's keys") {
+    const browser::StageDefaults stage = with_keys();
+    const Outcome fine = parse({"--keys", "f 7@3 up@4 G"}, stage);
+    REQUIRE(fine.parsed.options.has_value());
+    CHECK(fine.parsed.options->stage_keys.text() == "f, g, 0-9, up, down");
+    check_rejected({"--keys", "f g@2 h@3"},
+                   "--keys: \"h\" is not a key of this stage (its keys: f, g, 0-9, up, down)", stage);
+    check_rejected({"--keys", "comma"}, "\"comma\" is not a key of this stage", stage);
+    // A stage that declares no keys takes any.
+    CHECK(parse({"--keys", "h comma"}).parsed.options.has_value());
+}
+
+TEST_CASE("command_line: --help lists the stage's keys and what they do") {
+    const Outcome outcome = parse({"--help"}, with_keys());
+    CHECK(outcome.parsed.exit_status == 0);
+    CHECK_THAT(outcome.out, Catch::Contains("The keys of this stage, in a --keys script or live with --live:\n"
+                                            "  0-9 up down  select\n"
+                                            "  f g          a new shape\n"));
+    CHECK_THAT(outcome.out, Catch::Contains("Space pauses"));
+    CHECK_THAT(outcome.out, Catch::Contains("--live"));
+    CHECK_THAT(outcome.out, Catch::Contains("--record FILE"));
+    CHECK_THAT(outcome.out, Catch::Contains("--scale K=1"));
+    // The test hooks stay out of a reader's sight.
+    CHECK_THAT(outcome.out, !Catch::Contains("--live-events"));
+    CHECK_THAT(outcome.out, !Catch::Contains("--live-screenshot"));
+}
+
+TEST_CASE("command_line: a stage's key list with a bad name is a programming error") {
+    browser::StageDefaults stage = kDefaults;
+    stage.key_help = {{"f left", "?"}};
+    const char* const argv[] = {"prog", nullptr};
+    CHECK_THROWS_AS(browser::parse_command_line(1, argv, stage), std::logic_error);
+}
+
+TEST_CASE("command_line: --scale") {
+    CHECK(parse({}).parsed.options->scale == 1);
+    CHECK(parse({"--scale", "4"}).parsed.options->scale == 4);
+    check_rejected({"--scale", "0"}, "--scale: must be a whole number from 1 to 4 (got \"0\")");
+    check_rejected({"--scale", "5"}, "--scale: must be a whole number from 1 to 4 (got \"5\")");
+    check_rejected({"--scale", "1.5"}, "--scale");
+}
+
+TEST_CASE("command_line: --live, --record and what goes with them") {
+    check_rejected({"--record", "session.keys"}, "--record: only with --live");
+    check_rejected({"--live-events", "events.txt"}, "--live-events: only with --live");
+    check_rejected({"--live-screenshot", "shot.png"}, "--live-screenshot: only with --live");
+    if (!browser::live_window_supported()) {
+        check_rejected({"--live"}, std::string(browser::kNoLiveSupport));
+        return;
+    }
+    const browser::StageDefaults stage = with_keys();
+    const Outcome outcome = parse({"--live", "--record", "my session.keys", "--seed", "7", "--scene", "box.txt",
+                                   "--scale", "2"},
+                                  stage);
+    REQUIRE(outcome.parsed.options.has_value());
+    const browser::Options& options = *outcome.parsed.options;
+    CHECK(options.live.on);
+    CHECK(options.live.record == "my session.keys");
+    CHECK(options.live.title == "9.9 A Test Stage (s9_9)");
+    // The stage's default script is not played: the reader plays.
+    CHECK(options.keys.empty());
+    CHECK_FALSE(options.gif);
+    // The replay runs the same world: the program as called, with what shapes the run.
+    CHECK(options.live.replay_command ==
+          std::vector<std::string>{"/usr/bin/s9_9_test", "--seed", "7", "--scale", "2", "--scene", "box.txt"});
+    CHECK(options.live.replay_every == 10);
+    CHECK(options.live.replay_gif == browser::gif_supported());
+    CHECK(outcome.err.empty());
+
+    // The reader's own script plays in a live session too, whatever its last frame.
+    const Outcome scripted = parse({"--live", "--keys", "f@500"}, stage);
+    REQUIRE(scripted.parsed.options.has_value());
+    CHECK(scripted.parsed.options->keys.pressesAt(500) == std::vector<Key>{Key::F});
+    check_rejected({"--live", "--keys", "h"}, "\"h\" is not a key of this stage", stage);
+
+    // A live session writes no pictures and runs until the reader ends it.
+    for (const std::vector<std::string>& arguments :
+         {std::vector<std::string>{"--live", "--every", "5"}, {"--live", "--out", "x"}, {"--live", "--gif"},
+          {"--live", "--gif-every", "3"}}) {
+        check_rejected(arguments, "a --live session writes no pictures; record it with --record FILE");
+    }
+    check_rejected({"--live", "--frames", "100"}, "--frames: a --live session runs until Escape");
+    check_rejected({"--live", "--record", ""}, "--record: must name a file");
+    check_rejected({"--live=1"}, "--live: takes no value");
 }

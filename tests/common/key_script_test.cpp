@@ -138,3 +138,54 @@ TEST_CASE("key_script: the message says what is wrong with the token") {
     CHECK_THAT(error_of("left@3"), Catch::Contains("unknown key \"left\""));
     CHECK_THAT(error_of("@3"), Catch::Contains("key name must come first"));
 }
+
+TEST_CASE("key_script: a key set reads names and ranges, and lists its keys in Key order") {
+    const browser::KeySet set = browser::KeySet::parse("  w a s d\t0-9 UP down , f-h  ");
+    for (const Key key : {Key::W, Key::A, Key::S, Key::D, Key::Up, Key::Down, Key::Comma, Key::F, Key::G, Key::H}) {
+        INFO(browser::key_name(key));
+        CHECK(set.contains(key));
+    }
+    for (int digit = 0; digit <= 9; ++digit) CHECK(set.contains(static_cast<Key>(static_cast<int>(Key::Digit0) + digit)));
+    CHECK_FALSE(set.contains(Key::E));
+    CHECK_FALSE(set.contains(Key::I));
+    // Letters one by one, three or more neighbouring digits as a range.
+    CHECK(set.text() == "a, d, f, g, h, s, w, 0-9, comma, up, down");
+    CHECK(browser::KeySet::parse("1 2 5").text() == "1, 2, 5");
+    CHECK(browser::KeySet::parse("3-5").text() == "3-5");
+    CHECK(browser::KeySet::parse("").empty());
+    CHECK(browser::KeySet::parse("").text().empty());
+    CHECK_THROWS_AS(browser::KeySet::parse("f left"), KeyScriptError);
+    CHECK_THROWS_AS(browser::KeySet::parse("9-0"), KeyScriptError);   // backwards
+    CHECK_THROWS_AS(browser::KeySet::parse("a-9"), KeyScriptError);   // across letters and digits
+    CHECK_THROWS_AS(browser::KeySet::parse(",-a"), KeyScriptError);
+}
+
+TEST_CASE("key_script: the first key outside a set, in frame order") {
+    const browser::KeySet keys = browser::KeySet::parse("f g 0-9");
+    CHECK_FALSE(KeyScript::parse("f g@3 7*2").firstKeyOutside(keys).has_value());
+    CHECK(KeyScript::parse("q@9 f x@2").firstKeyOutside(keys) == Key::X);  // frame 2 before frame 9
+    CHECK_FALSE(KeyScript().firstKeyOutside(keys).has_value());
+}
+
+TEST_CASE("key_script: a script written as text reads back to the same presses") {
+    KeyScript script;
+    script.press(12, Key::F);
+    script.press(40, Key::D);
+    script.press(40, Key::D);
+    script.press(40, Key::D);
+    script.press(40, Key::Comma);
+    script.press(40, Key::D);
+    script.press(0, Key::Up);
+    // Frames in order; a run of one key is one KEY*COUNT token; order within a frame kept.
+    CHECK(script.text() == "up@0 f@12 d*3@40 comma@40 d@40");
+    CHECK(KeyScript::parse(script.text()) == script);
+    CHECK(KeyScript::parse(script.text()).pressesAt(40) == Keys{Key::D, Key::D, Key::D, Key::Comma, Key::D});
+    CHECK(KeyScript().text().empty());
+    CHECK(KeyScript::parse(KeyScript().text()).empty());
+
+    // More presses in a row than one token's count may hold are split over tokens.
+    KeyScript held;
+    for (int i = 0; i < KeyScript::kMaxCount + 5; ++i) held.press(7, Key::S);
+    CHECK(held.text() == "s*10000@7 s*5@7");
+    CHECK(KeyScript::parse(held.text()) == held);
+}

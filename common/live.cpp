@@ -1,0 +1,224 @@
+#include "live.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <system_error>
+
+#include "gif_writer.h"
+#include "page.h"
+#include "png_io.h"  // FileError
+
+namespace browser {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Seconds with two decimals, for the reader's eye ("0.68").
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", seconds);
+    return text;
+}
+
+// A word as a POSIX shell reads it back: bare when it holds only characters the shell
+// takes literally, else in single quotes (a quote inside written as '\'').
+std::string shell_word(const std::string& word) {
+    const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                               "0123456789_-+=./,:@%") == std::string::npos;
+    if (plain) return word;
+    std::string quoted = "'";
+    for (const char c : word) {
+        if (c == '\'') quoted += "'\\''";
+        else quoted += c;
+    }
+    return quoted + "'";
+}
+
+// The one command that replays a recorded session into pictures and a GIF.
+std::string replay_command(const LiveOptions& live, int frames) {
+    std::string command;
+    for (const std::string& word : live.replay_command) {
+        if (!command.empty()) command += ' ';
+        command += shell_word(word);
+    }
+    command += " --keys \"$(cat " + shell_word(live.record.string()) + ")\"";
+    command += " --frames " + std::to_string(frames);
+    command += " --every " + std::to_string(live.replay_every);
+    if (live.replay_gif) command += " --gif";
+    return command;
+}
+
+// Writes the script beside its place and renames it in, so a reader never finds half
+// a script. Throws FileError with a one-line reason.
+void write_script(const fs::path& file, const std::string& text) {
+    std::string suffix = ".partial-";  // appended: g++ 12 warns falsely about "." + to_string
+    suffix += std::to_string(::getpid());
+    fs::path partial = file;
+    partial += suffix;
+    {
+        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+        out << text << '\n';
+        out.close();
+        if (!out) {
+            std::error_code ignored;
+            fs::remove(partial, ignored);
+            throw FileError("cannot write it");
+        }
+    }
+    std::error_code error;
+    fs::rename(partial, file, error);
+    if (error) {
+        std::error_code ignored;
+        fs::remove(partial, ignored);
+        throw FileError(error.message());
+    }
+}
+
+// The folder a recorded script will go into must be there before the session starts,
+// or the reader would only learn at the end that it cannot be kept.
+bool record_place_is_there(const fs::path& file) {
+    const fs::path folder = file.parent_path();
+    std::error_code error;
+    return !fs::is_directory(file, error) && (folder.empty() || fs::is_directory(folder, error));
+}
+
+class LiveSession {
+public:
+    LiveSession(PageScripts& scripts, Window& window, const Options& options)
+        : scripts_(scripts), window_(window), options_(options) {}
+
+    // Runs frame `frames_run()`: the clock moves on one frame, the scripted keys and
+    // then the waiting ones are pressed, and the animation frame runs.
+    void runFrame() {
+        const int frame = frames_run_;
+        window_.clock.advanceFrame();
+        for (const Key key : options_.keys.pressesAt(frame)) press(frame, key);
+        for (const Key key : waiting_) press(frame, key);
+        waiting_.clear();
+        scripts_.onAnimationFrame();
+        page_ = render_page(window_.document);
+        ++frames_run_;
+    }
+
+    // Takes in what the reader did; false when they ended the session.
+    bool take(const std::vector<LiveInput>& inputs) {
+        for (const LiveInput& input : inputs) {
+            switch (input.kind) {
+                case LiveInput::Kind::End: return false;
+                case LiveInput::Kind::Pause: paused_ = !paused_; break;
+                case LiveInput::Kind::Step:
+                    if (paused_) ++steps_;
+                    break;
+                case LiveInput::Kind::PageKey:
+                    if (options_.stage_keys.empty() || options_.stage_keys.contains(input.key)) {
+                        waiting_.push_back(input.key);
+                    }
+                    break;
+            }
+        }
+        return true;
+    }
+
+    // One refresh of the display: the next frame runs unless the session is paused
+    // (a step asked for while paused runs one). A key script cannot name a frame past
+    // KeyScript::kMaxFrame, so a session stops there (after about 46 hours at 60 Hz).
+    void refresh() {
+        if (frames_run_ >= KeyScript::kMaxFrame) return;
+        if (!paused_) {
+            runFrame();
+        } else if (steps_ > 0) {
+            --steps_;
+            runFrame();
+        }
+    }
+
+    Image picture() const { return with_status_line(page_, status(), window_.document.canvas.scale()); }
+    int framesRun() const { return frames_run_; }
+    const KeyScript& recorded() const { return recorded_; }
+    int presses() const { return presses_; }
+
+private:
+    void press(int frame, Key key) {
+        scripts_.onKeyDown(key);
+        recorded_.press(frame, key);
+        ++presses_;
+    }
+
+    // "frame 41 (0.68 s)   Space: pause   Esc: end", or while paused "paused after
+    // frame 41 (0.68 s)   waiting: f g   period: one frame   Space: go on   Esc: end".
+    std::string status() const {
+        const int shown = frames_run_ - 1;
+        const double seconds = frames_run_ * options_.frame_ms / 1000.0;
+        std::string text = paused_ ? "paused after frame " : "frame ";
+        text += std::to_string(shown) + " (" + seconds_text(seconds) + " s)";
+        if (!waiting_.empty()) {
+            text += "   waiting:";
+            for (const Key key : waiting_) text += ' ' + key_name(key);
+        }
+        if (!options_.live.record.empty()) text += "   recording";
+        text += paused_ ? "   period: one frame   Space: go on   Esc: end" : "   Space: pause   Esc: end";
+        return text;
+    }
+
+    PageScripts& scripts_;
+    Window& window_;
+    const Options& options_;
+    Image page_;
+    std::vector<Key> waiting_;  // pressed by the reader, for the next frame that runs
+    KeyScript recorded_;
+    int presses_ = 0;
+    int frames_run_ = 0;
+    bool paused_ = false;
+    int steps_ = 0;
+};
+
+}  // namespace
+
+int run_live(PageScripts& scripts, Window& window, const Options& options, Screen& screen) {
+    const fs::path& record = options.live.record;
+    if (!record.empty() && !record_place_is_there(record)) {
+        std::cerr << "--record: cannot write \"" << record.string() << "\": no such folder, or it is a folder\n";
+        return 2;
+    }
+
+    LiveSession session(scripts, window, options);
+    session.runFrame();
+    screen.show(session.picture());
+    while (session.take(screen.nextFrame())) {
+        session.refresh();
+        screen.show(session.picture());
+    }
+    try {
+        screen.close();
+    } catch (const FileError& error) {
+        std::cerr << "--live-screenshot: " << error.what() << '\n';
+        return 1;
+    }
+
+    const int frames = session.framesRun();
+    const std::string seconds = seconds_text(frames * options.frame_ms / 1000.0);
+    if (record.empty()) {
+        std::cout << "played " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds
+                  << " s); --record FILE keeps the key presses of a session to replay them\n";
+        return 0;
+    }
+    const std::string script = session.recorded().text();
+    try {
+        write_script(record, script);
+    } catch (const FileError& error) {
+        std::cerr << "cannot write the key script to \"" << record.string() << "\": " << error.what()
+                  << "; it was: " << script << '\n';
+        return 1;
+    }
+    std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
+              << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
+              << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
+              << "  " << replay_command(options.live, frames) << '\n';
+    return 0;
+}
+
+}  // namespace browser

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# A live session as a person plays it, on a virtual X display: start the stage with
+# --live --record, press F, G, H and comma on the keyboard (xdotool's XTEST presses,
+# which the X server delivers like real ones), pause with Space, take a screenshot of
+# the window with xwd, end with Escape. Then: the recorded script names those four keys
+# in that order, and the replay command the program printed draws a final.png equal,
+# pixel for pixel, to the page in the screenshot (the window minus its status line).
+#
+# usage: xvfb_session.sh PROGRAM XWD_TO_PNG COMPARE_PNG HAS_WINDOW
+# HAS_WINDOW is "yes" when the build has SDL2's window. Exit status 77 (CTest's
+# "skipped" here) with a message when it has not, or when Xvfb, xdotool or xwd is
+# missing: tools/setup installs libsdl2-dev, xvfb, xdotool and x11-apps.
+set -euo pipefail
+program=$1 xwd_to_png=$2 compare_png=$3 has_window=$4
+
+if [[ "$has_window" != yes ]]; then
+  echo "SKIPPED: this build has no live window (SDL2); live.program checks that --live says so"
+  exit 77
+fi
+for tool in Xvfb xdotool xwd; do
+  if ! command -v "$tool" >/dev/null; then
+    echo "SKIPPED: $tool is not installed (tools/setup installs xvfb, xdotool and x11-apps)"
+    exit 77
+  fi
+done
+
+work=$(mktemp -d)
+xvfb_pid='' live_pid=''
+cleanup() {
+  if [[ -n "$live_pid" ]]; then kill "$live_pid" 2>/dev/null || true; fi
+  if [[ -n "$xvfb_pid" ]]; then kill "$xvfb_pid" 2>/dev/null || true; fi
+  rm -rf "$work"
+}
+trap cleanup EXIT
+fail() { echo "FAILED: $*"; for f in "$work"/*.txt; do [[ -f "$f" ]] && { echo "--- $(basename "$f")"; cat "$f"; }; done; exit 1; }
+
+# Xvfb picks a free display number and writes it to file descriptor 3 once it is ready.
+Xvfb -displayfd 3 -screen 0 1400x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.txt" &
+xvfb_pid=$!
+for _ in $(seq 100); do [[ -s "$work/display" ]] && break; sleep 0.1; done
+[[ -s "$work/display" ]] || fail "Xvfb did not start"
+export DISPLAY=":$(cat "$work/display")"
+
+cd "$work"
+# In the sanitizer build (.ci/run) leak checking is off for this one run: under X11,
+# SDL's system libraries leave about 1 KB behind at exit (libdbus, and libraries SDL
+# loads and unloads itself, so LeakSanitizer cannot even name them). The same session
+# code runs with leak checking on in live.program, under SDL's dummy driver.
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" SDL_VIDEODRIVER=x11 \
+  "$program" --live --record session.keys >live_out.txt 2>live_err.txt &
+live_pid=$!
+window=$(timeout 10 xdotool search --sync --name 's4_4' | head -n 1) || fail "no window appeared"
+# No window manager gives focus here: the keyboard goes to the window under the pointer.
+xdotool mousemove --window "$window" 20 20
+xdotool key --delay 100 f g h comma
+sleep 0.3
+xdotool key space   # paused: the page stands still for the screenshot
+sleep 0.5
+xwd -id "$window" -silent -out shot.xwd
+xdotool key Escape
+for _ in $(seq 100); do kill -0 "$live_pid" 2>/dev/null || break; sleep 0.1; done
+status=0
+wait "$live_pid" || status=$?
+live_pid=''
+[[ $status -eq 0 ]] || fail "the live session ended with status $status"
+
+script=$(cat session.keys)
+echo "recorded: $script"
+[[ "$script" =~ ^f@([0-9]+)\ g@([0-9]+)\ h@([0-9]+)\ comma@([0-9]+)$ ]] || fail "unexpected key script \"$script\""
+frames=("${BASH_REMATCH[@]:1}")
+for i in 1 2 3; do
+  ((frames[i] >= frames[i - 1])) || fail "keys out of order in \"$script\""
+done
+
+# The second line of what the session printed is the replay command.
+command=$(sed -n '2s/^  //p' live_out.txt)
+[[ "$command" == *"--keys \"\$(cat session.keys)\" --frames "* ]] || fail "no replay command printed"
+bash -c "$command" >replay_out.txt 2>&1 || fail "the replay command failed: $command"
+
+# The page is the window's top 450 rows (the book's canvas height); the status line is below.
+"$xwd_to_png" shot.xwd shot.png 450 || fail "cannot read the screenshot"
+"$compare_png" --channel 0 --share 0 out/s4_4/final.png shot.png >compare.txt ||
+  fail "the screenshot differs from the replay's final.png: $(cat compare.txt)"
+echo "the window showed the replay's final.png, pixel for pixel"
