@@ -50,19 +50,16 @@ public:
         const double dy = y_[i] - y_[j];
         const double d2 = dx * dx + dy * dy;  // the book's distance, before its root
         const double reach = radius_[i] + radius_[j];
-        const double reach2 = reach * reach;
-        if (reach2 >= kSmallestSquare) {
-            if (d2 > reach2 * kAboveRounding) return false;
-            if (d2 < reach2 * kBelowRounding) return true;
-        }
+        if (clearlyApart(d2, reach)) return false;
+        if (clearlyOverlapping(d2, reach)) return true;
         return std::sqrt(d2) <= reach;
     }
 
     // The first j in [from, end) whose circle may overlap circle i, or `end`: the pairs
-    // that overlap() would turn down at its first comparison are skipped, four at a
-    // time. A block of four has no branch inside, so the compiler computes it with
-    // vector instructions, two or four pairs at once; a row is mostly far-apart pairs,
-    // and only the blocks that hold a near one are looked at pair by pair.
+    // that overlap() turns down at its first comparison are skipped, a block of eight
+    // at a time. A block has no branch inside, so the compiler computes it with vector
+    // instructions, several pairs at once; a row is mostly far-apart pairs, and only the
+    // blocks that hold a near one are looked at pair by pair.
     std::size_t nextNear(std::size_t i, std::size_t from, std::size_t end) const {
         const double xi = x_[i];
         const double yi = y_[i];
@@ -70,9 +67,7 @@ public:
         const auto near = [&](std::size_t j) {
             const double dx = xi - x_[j];
             const double dy = yi - y_[j];
-            const double reach = ri + radius_[j];
-            const double reach2 = reach * reach;
-            return reach2 < kSmallestSquare || !(dx * dx + dy * dy > reach2 * kAboveRounding);
+            return !clearlyApart(dx * dx + dy * dy, ri + radius_[j]);
         };
         std::size_t j = from;
         for (; j + kBlock <= end; j += kBlock) {
@@ -87,6 +82,17 @@ public:
     }
 
 private:
+    // The two comparisons of squares that settle the book's test when rounding cannot
+    // (see overlap()); neither holds for NaN, which goes on to the book's comparison.
+    static bool clearlyApart(double d2, double reach) {
+        const double reach2 = reach * reach;
+        return reach2 >= kSmallestSquare && d2 > reach2 * kAboveRounding;
+    }
+    static bool clearlyOverlapping(double d2, double reach) {
+        const double reach2 = reach * reach;
+        return reach2 >= kSmallestSquare && d2 < reach2 * kBelowRounding;
+    }
+
     static constexpr std::size_t kBlock = 8;
     static constexpr double kAboveRounding = 1 + 1e-12;
     static constexpr double kBelowRounding = 1 - 1e-12;
