@@ -1,0 +1,19 @@
+#pragma once
+// What a fuzz target does when a property fails: say which, and stop the run with a
+// crash, so that libFuzzer keeps the input that did it (crash-<hash>) and reports it.
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace fuzz {
+
+[[noreturn]] inline void property_failed(const char* property, const char* detail = "") {
+    std::fprintf(stderr, "property failed: %s %s\n", property, detail);
+    std::abort();
+}
+
+inline void require(bool holds, const char* property, const char* detail = "") {
+    if (!holds) property_failed(property, detail);
+}
+
+}  // namespace fuzz
