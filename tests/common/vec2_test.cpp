@@ -74,6 +74,17 @@ TEST_CASE("vec2: normalize gives unit length; zero stays zero") {
     CHECK(Vec2{}.normalize() == Vec2{});
 }
 
+TEST_CASE("vec2: below 1.5e-154 normalize is not of unit length (pinned, found by fuzz/)") {
+    // length() squares the coordinates, and a square below 2^-1022 (2.2e-308) is a
+    // subnormal number, held to a few digits. (3e-162, 0): 9e-324 rounds to
+    // 2 x 2^-1074 = 9.8813e-324, whose root is 3.14345e-162, so the "unit" vector is
+    // 3e-162 / 3.14345e-162 = 0.95437 long. Two circles whose centres are that close
+    // get that normal (fuzz/collision_fuzz.cpp): scene coordinates need a floor.
+    CHECK_THAT(Vec2(3e-162, 0).normalize().x, WithinAbs(0.95437, 1e-5));
+    // At 1e-150 the square, 1e-300, is a normal number, and so is the answer.
+    CHECK_THAT(Vec2(1e-150, 0).normalize().x, WithinAbs(1.0, 1e-15));
+}
+
 TEST_CASE("vec2: distance is symmetric") {
     CHECK(Vec2{1, 1}.distance(Vec2{4, 5}) == 5.0);
     CHECK(Vec2{4, 5}.distance(Vec2{1, 1}) == 5.0);

@@ -140,3 +140,20 @@ TEST_CASE("rectangle circle collision: the broad phase never drops a pair the na
     CHECK(narrow > 1'000);
     CHECK(dropped == 0);
 }
+
+TEST_CASE("rectangle circle collision: a rectangle thinner than the spacing of doubles has no side normals "
+          "(pinned, found by fuzz/)") {
+    // 1e-14 px wide about x = 400.5, where doubles lie 2^-44 = 5.7e-14 apart: both
+    // sides round to x = 400.5, each side's normal is the zero vector, and a circle
+    // beside it is "inside", behind a face 0 px away. The collision has depth = radius
+    // and no normal at all. Scene sizes need a floor relative to the coordinates for
+    // this (sizes >= 1e-3 px with |coordinates| <= 1e6 px keep 9 digits to spare): see
+    // fuzz/collision_fuzz.cpp.
+    const engine::Rectangle sliver({400.5, 200}, 1e-14, 40);
+    CHECK(sliver.vertices()[0].x == sliver.vertices()[1].x);
+    CHECK(sliver.faceNormals()[1] == Vec2{0, 0});
+    const auto info = sliver.collisionTest(engine::Circle({395, 200}, 10));
+    REQUIRE(info.has_value());
+    CHECK(info->depth() == 10);
+    CHECK(info->normal() == Vec2{0, 0});
+}
