@@ -22,9 +22,18 @@
 //   (-1)^sign * (1 + m / 2^32) * 2^e,  or 0 when e is below the smallest exponent,
 // so that every scale in a range is tried as often as any other, and exact zeros,
 // equal centres and equal sizes come up. The ranges (kCoordinates, kOffsets, kSizes,
-// kAngles below) are the ones within which the engine keeps the properties: a
-// rectangle 1e-12 px wide 6000 px from the origin has all four corners on one
-// double, and no normal at all.
+// kAngles below) are the ones within which the engine keeps the properties; wider,
+// this target finds each of these at once (the first two pinned by tests):
+//  - a rectangle thinner than the spacing of doubles at its centre (1e-14 px wide at
+//    x = 400.5, 9e-13 px at x = 6000) has both sides on one double and no side normal:
+//    a circle beside it collides with normal (0, 0) (rectangle_circle_collision_test);
+//  - centres under 1.5e-154 px apart but not equal (coordinates such as 3e-162):
+//    the squares in length() are subnormal, and the normal is 0.95 long (vec2_test);
+//  - magnitudes above 1e154 px: the squares overflow, length() is infinite and the
+//    normal (0, 0).
+// So a scene needs sizes with a floor, coordinates with a ceiling, and the two far
+// enough apart (sizes >= 1e-3 px and |coordinates| <= 1e6 px leave 2^-30 against the
+// 2^-52 that breaks), and non-zero coordinates no smaller than about 1e-150.
 
 #include <cmath>
 #include <cstddef>

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 
 namespace fuzz {
 
@@ -15,5 +16,8 @@ namespace fuzz {
 inline void require(bool holds, const char* property, const char* detail = "") {
     if (!holds) property_failed(property, detail);
 }
+
+// A message a terminal shows on one line: no line feed, no carriage return.
+inline bool one_line(std::string_view message) { return message.find_first_of("\n\r") == std::string_view::npos; }
 
 }  // namespace fuzz
