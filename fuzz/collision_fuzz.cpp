@@ -31,9 +31,9 @@
 //    the squares in length() are subnormal, and the normal is 0.95 long (vec2_test);
 //  - magnitudes above 1e154 px: the squares overflow, length() is infinite and the
 //    normal (0, 0).
-// So a scene needs sizes with a floor, coordinates with a ceiling, and the two far
-// enough apart (sizes >= 1e-3 px and |coordinates| <= 1e6 px leave 2^-30 against the
-// 2^-52 that breaks), and non-zero coordinates no smaller than about 1e-150.
+// So a scene needs sizes with a floor and coordinates with a ceiling, far enough apart
+// (sizes >= 1e-3 px and |coordinates| <= 1e6 px: a ratio of 1e-9, where 2^-53, 1e-16,
+// breaks), and non-zero coordinates no smaller than about 1e-150 px.
 
 #include <cmath>
 #include <cstddef>
@@ -57,13 +57,14 @@ struct Magnitudes {
     int largest_exponent;   // every magnitude is below 2^(largest_exponent + 1)
     bool zero;              // 0 may come up too
 };
-// Centres within about 1e6 px of the origin (2^20 = 1048576), the offset from A's
-// centre to B's from 1e-12 px (nearly the same centre) to as far as the centres go.
+// Centre coordinates 0 or from 2^-40 (9e-13) px to under 2^21 (2.1e6) px, the offset
+// from A's centre to B's from 0 (the same centre) or 2^-40 px to as far as the centres
+// go apart.
 constexpr Magnitudes kCoordinates{-40, 20, true};
 constexpr Magnitudes kOffsets{-40, 21, true};
-// Sizes from 1e-3 px (2^-10) to 1e6 px.
+// Sizes from 2^-10 (1e-3) px to under 2^21 (2.1e6) px.
 constexpr Magnitudes kSizes{-10, 20, false};
-// Angles in radians, up to 1e12 turns.
+// Angles 0 or from 2^-40 to under 2^41 (2.2e12) rad.
 constexpr Magnitudes kAngles{-40, 40, true};
 
 // normalize() divides by a rounded length: the result is within a few units in the
@@ -119,12 +120,15 @@ std::string describe(const engine::RigidShape& a, const engine::RigidShape& b, c
 }
 
 void check(const engine::RigidShape& a, const engine::RigidShape& b, const engine::CollisionInfo& info) {
+    const bool finite_numbers = std::isfinite(info.depth()) && finite(info.normal()) && finite(info.start());
+    const bool unit_normal = std::abs(info.normal().length() - 1.0) <= kUnitTolerance;
+    const bool not_negative = info.depth() >= 0.0;
+    if (finite_numbers && unit_normal && not_negative) return;
+    // Described only when a property fails: most inputs collide, and this is slow.
     const std::string shapes = describe(a, b, info);
-    fuzz::require(std::isfinite(info.depth()) && finite(info.normal()) && finite(info.start()),
-                  "depth, normal and start are finite", shapes.c_str());
-    fuzz::require(std::abs(info.normal().length() - 1.0) <= kUnitTolerance, "the normal has unit length",
-                  shapes.c_str());
-    fuzz::require(info.depth() >= 0.0, "the depth is >= 0", shapes.c_str());
+    fuzz::require(finite_numbers, "depth, normal and start are finite", shapes.c_str());
+    fuzz::require(unit_normal, "the normal has unit length", shapes.c_str());
+    fuzz::require(not_negative, "the depth is >= 0", shapes.c_str());
 }
 
 }  // namespace
