@@ -32,7 +32,7 @@
 //  - magnitudes above 1e154 px: the squares overflow, length() is infinite and the
 //    normal (0, 0).
 // So a scene needs sizes with a floor and coordinates with a ceiling, far enough apart
-// (sizes >= 1e-3 px and |coordinates| <= 1e6 px: a ratio of 1e-9, where 2^-53, 1e-16,
+// (sizes >= 1e-3 px and |coordinates| <= 1e6 px: a ratio of 1e-9, where 2^-52, 2e-16,
 // breaks), and non-zero coordinates no smaller than about 1e-150 px.
 
 #include <cmath>
