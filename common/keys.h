@@ -63,6 +63,9 @@ public:
     // Limits that keep a typo ("f*1000000000") from making a run allocate or loop for ages.
     static constexpr int kMaxCount = 10'000;
     static constexpr int kMaxFrame = 10'000'000;
+    // In all, over every token: each press may add a shape (F, G), and every step works
+    // on every pair of shapes.
+    static constexpr int kMaxPresses = 2'000;
 
     KeyScript() = default;
     // Throws KeyScriptError with one line naming the token and listing the valid keys.
@@ -70,6 +73,8 @@ public:
 
     // Keys pressed before frame `frame`, in script order.
     std::vector<Key> pressesAt(int frame) const;
+    // How many presses there are in all.
+    std::size_t pressCount() const;
     // The last frame any key is pressed at (-1 for an empty script).
     int lastFrame() const;
     bool empty() const { return presses_.empty(); }
