@@ -61,7 +61,7 @@ private:
 class KeyScript {
 public:
     // Limits that keep a typo ("f*1000000000") from making a run allocate or loop for ages.
-    static constexpr int kMaxCount = 10'000;
+    static constexpr int kMaxCount = 2'000;
     static constexpr int kMaxFrame = 10'000'000;
     // In all, over every token: each press may add a shape (F, G), and every step works
     // on every pair of shapes.

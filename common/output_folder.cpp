@@ -50,14 +50,19 @@ OutputFolder::OutputFolder(const fs::path& out, std::string marker)
     : out_(normalized(out)), suffix_(process_suffix()) {
     check_replaceable(out_, marker);
     note_interruptions();
-    if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
-    remove_stale_leftovers(out_, ".partial-");
-    remove_stale_leftovers(out_, ".old-");
     fs::path staging = out_;
     staging += ".partial" + suffix_;
-    fs::remove_all(staging);  // left over from a crashed run that had our process id
-    leftover_.emplace(staging);
-    fs::create_directory(staging);
+    // Before the run starts, a folder that cannot be made is one more refusal of --out.
+    try {
+        if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
+        remove_stale_leftovers(out_, ".partial-");
+        remove_stale_leftovers(out_, ".old-");
+        fs::remove_all(staging);  // left over from a crashed run that had our process id
+        leftover_.emplace(staging);
+        fs::create_directory(staging);
+    } catch (const fs::filesystem_error& error) {
+        throw OutputRefused(error.code().message());
+    }
     staging_ = std::move(staging);
 }
 

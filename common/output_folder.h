@@ -23,8 +23,8 @@ namespace browser {
 class OutputFolder {
 public:
     // Checks that `out` may be replaced and makes the staging folder. Throws
-    // OutputRefused (png_io.h) with a one-line reason when it may not, FileError or
-    // std::filesystem::filesystem_error when the staging folder cannot be made.
+    // OutputRefused (png_io.h) with a one-line reason when it may not, or when the
+    // staging folder cannot be made.
     OutputFolder(const std::filesystem::path& out, std::string marker);
     ~OutputFolder();  // removes the staging folder unless commit() has run
     OutputFolder(const OutputFolder&) = delete;
