@@ -132,11 +132,18 @@ private:
     std::unique_ptr<GifWriter> gif_;
 };
 
-// How the budget's figure reads in a message: "3.2e+10".
+// How the budget's figure reads in a message: "3.21e+10".
 std::string rounded(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2g", value);
+    std::snprintf(text, sizeof text, "%.3g", value);
     return text;
+}
+
+// The shapes a run can have at most: those at the start, and one for each press of the
+// keys that add one (F, G: "a new rectangle / circle" in every stage).
+double most_shapes(const StepCost& step, const Options& options) {
+    static const KeySet kAddingKeys = KeySet::parse("f g");
+    return static_cast<double>(step.shapes) + static_cast<double>(options.keys.pressCount(kAddingKeys));
 }
 
 // Why a run goes over its budget, in one line, or nothing when it does not.
@@ -147,17 +154,16 @@ std::optional<std::string> over_budget(const StepCost& step, const Canvas& canva
     if (device_pixels > kMaxDevicePixels) {
         excess = "the page is too large: " + std::to_string(canvas.width() * canvas.scale()) + " x " +
                  std::to_string(canvas.height() * canvas.scale()) + " device pixels at --scale " +
-                 std::to_string(canvas.scale()) + ", more than the " + std::to_string(static_cast<long>(kMaxDevicePixels)) +
-                 " a page may have (a smaller canvas or --scale)";
+                 std::to_string(canvas.scale()) + ", more than the " +
+                 std::to_string(static_cast<long>(kMaxDevicePixels)) + " a page may have (a smaller canvas or --scale)";
     } else if (const double drawn = device_pixels * options.frames; drawn > kMaxPixelsDrawn) {
         excess = "the run is too long: " + std::to_string(options.frames) + " frames of " + rounded(device_pixels) +
                  " device pixels draw " + rounded(drawn) + " pixels, more than the " + rounded(kMaxPixelsDrawn) +
                  " a run may (fewer --frames, a smaller canvas or --scale)";
     } else if (const double tests = pair_test_bound(step, options); tests > kMaxPairTests) {
-        const std::size_t shapes = step.shapes + options.keys.pressCount();
         excess = "the run is too long: " + std::to_string(options.frames) + " frames of up to " +
-                 std::to_string(shapes) + " shapes may cost " + rounded(tests) + " pair tests, more than the " +
-                 rounded(kMaxPairTests) +
+                 std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
+                 " pair tests, more than the " + rounded(kMaxPairTests) +
                  " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";
     }
     if (excess.empty()) return std::nullopt;
@@ -169,10 +175,11 @@ std::optional<std::string> over_budget(const StepCost& step, const Canvas& canva
 double pair_test_bound(const StepCost& step, const Options& options) {
     const double run_ms = static_cast<double>(options.frames) * options.frame_ms;
     const double steps = std::floor(run_ms / (step.dt_s * 1000.0)) + 1.0;
-    const double shapes = static_cast<double>(step.shapes) + static_cast<double>(options.keys.pressCount());
+    const double shapes = most_shapes(step, options);
     const double pairs = shapes * (shapes - 1.0) / 2.0;
     const double per_substep = std::max(step.passes, 1) * pairs + shapes;  // the passes, then every shape's move
-    return steps * std::max(step.substeps, 1) * per_substep;
+    const double drawn = step.draws_pairs ? static_cast<double>(options.frames) * pairs * kDrawnPairCost : 0.0;
+    return steps * std::max(step.substeps, 1) * per_substep + drawn;
 }
 
 Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {

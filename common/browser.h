@@ -25,12 +25,14 @@ struct Window {
 };
 
 // What one fixed step of a page's world costs at most, for the run's budget: every
-// step tests every pair of shapes once a collision pass, `passes` times a sub-step.
+// step tests every pair of shapes once a collision pass, `passes` times a sub-step; and
+// a page that draws the collisions it found (chapter 3 to 4.2) draws a line a pair.
 struct StepCost {
     double dt_s = 1.0 / 60.0;  // the fixed step, s
     int substeps = 1;
     int passes = 1;            // collision passes a sub-step (0 counts as 1: the pairs are still found)
-    std::size_t shapes = 0;    // at the start; each key press may add one more (F, G)
+    std::size_t shapes = 0;    // at the start; each F or G press may add one more
+    bool draws_pairs = true;   // every frame draws a line for every pair that collides
 };
 
 // The budget of a run, so that every run fits in memory and ends in minutes
@@ -42,10 +44,14 @@ struct StepCost {
 inline constexpr double kMaxDevicePixels = 4096.0 * 4096.0;
 inline constexpr double kMaxPixelsDrawn = 5e11;
 inline constexpr double kMaxPairTests = 5e9;
+// Drawing a pair's collision line costs about as much as this many pair tests (a line
+// across a few hundred pixels against a separating-axis test, measured).
+inline constexpr double kDrawnPairCost = 1000.0;
 
 // An upper bound of the pair tests a run costs: its fixed steps (frames x frame_ms / dt,
 // plus one) times sub-steps times passes times the pairs of the most shapes it can have
-// (those at the start and one a key press).
+// (those at the start and one an F or G press), and for a page that draws its pairs,
+// kDrawnPairCost a pair a frame.
 double pair_test_bound(const StepCost& step, const Options& options);
 
 // What a stage's index.html registers with the browser.

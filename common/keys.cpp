@@ -1,5 +1,6 @@
 #include "keys.h"
 
+#include <algorithm>
 #include <charconv>
 
 #include "message_text.h"
@@ -184,6 +185,14 @@ std::vector<Key> KeyScript::pressesAt(int frame) const {
 std::size_t KeyScript::pressCount() const {
     std::size_t count = 0;
     for (const auto& [frame, pressed] : presses_) count += pressed.size();
+    return count;
+}
+
+std::size_t KeyScript::pressCount(const KeySet& keys) const {
+    std::size_t count = 0;
+    for (const auto& [frame, pressed] : presses_) {
+        count += static_cast<std::size_t>(std::count_if(pressed.begin(), pressed.end(), [&](Key key) { return keys.contains(key); }));
+    }
     return count;
 }
 

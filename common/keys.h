@@ -75,6 +75,8 @@ public:
     std::vector<Key> pressesAt(int frame) const;
     // How many presses there are in all.
     std::size_t pressCount() const;
+    // How many presses there are of the keys in `keys`.
+    std::size_t pressCount(const KeySet& keys) const;
     // The last frame any key is pressed at (-1 for an empty script).
     int lastFrame() const;
     bool empty() const { return presses_.empty(); }

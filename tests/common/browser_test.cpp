@@ -294,7 +294,7 @@ public:
     explicit CostlyScripts(std::size_t shapes) : shapes_(shapes) {}
     void onKeyDown(Key) override {}
     void onAnimationFrame() override {}
-    browser::StepCost stepCost() const override { return {.passes = 15, .shapes = shapes_}; }
+    browser::StepCost stepCost() const override { return {.passes = 15, .shapes = shapes_, .draws_pairs = false}; }
 
 private:
     std::size_t shapes_;
@@ -307,10 +307,17 @@ TEST_CASE("browser: the pair-test bound counts steps, sub-steps, passes and the 
     options.frame_ms = 1000.0 / 60.0;
     // 10 frames of one 1/60 s step each, plus the one the clock's rounding may add: 11
     // steps; 7 + 3 shapes: 45 pairs, 15 passes each, and 10 moves.
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7}, options) == 11.0 * (15 * 45 + 10));
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7, .draws_pairs = false}, options) == 11.0 * (15 * 45 + 10));
     // Sub-steps multiply it all; dt = 1/600 s runs ten steps a frame.
-    CHECK(browser::pair_test_bound({.dt_s = 1.0 / 600.0, .substeps = 4, .passes = 0, .shapes = 7}, options) ==
-          101.0 * 4 * (45 + 10));
+    CHECK(browser::pair_test_bound({.dt_s = 1.0 / 600.0, .substeps = 4, .passes = 0, .shapes = 7, .draws_pairs = false},
+                                   options) == 101.0 * 4 * (45 + 10));
+    // A page that draws its collisions draws each pair once a frame, at kDrawnPairCost.
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7}, options) ==
+          11.0 * (15 * 45 + 10) + 10 * 45 * browser::kDrawnPairCost);
+    // Only F and G add shapes: other presses cost nothing more.
+    browser::Options moves = options_for("unused", 10, 0, "d*100");
+    moves.frame_ms = 1000.0 / 60.0;
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 10, .draws_pairs = false}, moves) == 11.0 * (15 * 45 + 10));
 }
 
 TEST_CASE("browser: a run over its budget is refused with status 2 before anything is written") {
@@ -319,10 +326,10 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
     struct Case { std::size_t shapes; int frames; int width, height, scale; const char* says; };
     const Case cases[] = {
         // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests.
-        {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.1e+09 pair tests"},
+        {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests"},
         {0, 1, 4096, 4096, 2, "the page is too large: 8192 x 8192 device pixels at --scale 2"},
         // 4096 x 4096 px, 29,803 frames: 5.0e11 pixels drawn.
-        {0, 29803, 4096, 4096, 1, "the run is too long: 29803 frames of 1.7e+07 device pixels draw 5e+11 pixels"},
+        {0, 29803, 4096, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
     };
     for (const Case& c : cases) {
         INFO(c.says);
@@ -343,5 +350,5 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
     // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests (never run here).
     browser::Options inside = options_for(out, 100, 0);
     inside.frame_ms = 1000.0 / 60.0;
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500}, inside) <= browser::kMaxPairTests);
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <= browser::kMaxPairTests);
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <limits>
@@ -527,5 +528,30 @@ TEST_CASE("hostile input: a step that leaves a number no double can be is named,
         FAIL("checkFinite let a NaN through");
     } catch (const browser::NonFiniteState& error) {
         CHECK(std::string(error.what()).rfind("step 1: body 0 (circle) has a position or velocity that is not a finite number", 0) == 0);
+    }
+}
+
+TEST_CASE("hostile input: at every corner of the ranges a moving body's inverse mass and inertia are finite and > 0") {
+    // The ranges of docs/scene_format.md: masses [1e-3, 1e6], sizes [0.01, 1e5] px. The
+    // extreme inertias are m r^2 / 2 = 5e-8 and m (w^2 + h^2) / 12 = 1.7e15 or so.
+    std::vector<browser::BodyDescription> bodies;
+    for (const double mass : {1e-3, 1e6}) {
+        for (const double size : {0.01, 1e5}) {
+            bodies.push_back({.shape = browser::ShapeKind::circle, .radius = size, .mass = mass});
+            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = size, .height = size, .mass = mass});
+            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = 0.01, .height = 1e5, .mass = mass});
+        }
+    }
+    test::WorldFixture page(engine::kBookWorld);
+    engine::buildScene(page.core, bodies);
+    REQUIRE(page.core.objectCount() == bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        INFO("body " << i);
+        const engine::RigidShape& shape = page.core.object(i);
+        CHECK(std::isfinite(shape.invMass()));
+        CHECK(shape.invMass() > 0);
+        CHECK(std::isfinite(shape.invInertia()));
+        CHECK(shape.invInertia() > 0);
+        CHECK(std::isfinite(1 / shape.invInertia()));  // the inertia itself
     }
 }
