@@ -146,6 +146,9 @@ double most_shapes(const StepCost& step, const Options& options) {
     return static_cast<double>(step.shapes) + static_cast<double>(options.keys.pressCount(kAddingKeys));
 }
 
+// "1 frame", "480 frames".
+std::string frames_text(int frames) { return std::to_string(frames) + (frames == 1 ? " frame" : " frames"); }
+
 // Why a run goes over its budget, in one line, or nothing when it does not.
 std::optional<std::string> over_budget(const StepCost& step, const Canvas& canvas, const Options& options) {
     const double device_pixels = static_cast<double>(canvas.width()) * canvas.scale() *
@@ -157,11 +160,11 @@ std::optional<std::string> over_budget(const StepCost& step, const Canvas& canva
                  std::to_string(canvas.scale()) + ", more than the " +
                  std::to_string(static_cast<long>(kMaxDevicePixels)) + " a page may have (a smaller canvas or --scale)";
     } else if (const double drawn = device_pixels * options.frames; drawn > kMaxPixelsDrawn) {
-        excess = "the run is too long: " + std::to_string(options.frames) + " frames of " + rounded(device_pixels) +
+        excess = "the run is too long: " + frames_text(options.frames) + " of " + rounded(device_pixels) +
                  " device pixels draw " + rounded(drawn) + " pixels, more than the " + rounded(kMaxPixelsDrawn) +
                  " a run may (fewer --frames, a smaller canvas or --scale)";
     } else if (const double tests = pair_test_bound(step, options); tests > kMaxPairTests) {
-        excess = "the run is too long: " + std::to_string(options.frames) + " frames of up to " +
+        excess = "the run is too long: " + frames_text(options.frames) + " of up to " +
                  std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
                  " pair tests, more than the " + rounded(kMaxPairTests) +
                  " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";

@@ -1,7 +1,5 @@
 #include "scene_io.h"
 
-#include <cmath>
-
 #include <algorithm>
 #include <cmath>
 #include <iterator>

@@ -554,7 +554,7 @@ TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as 
     CHECK(run.status == 2);
     // 1,667 steps x 1000 sub-steps x (1000 x 3 pairs + 3 moves) = 5.006e9 pair tests.
     CHECK(run.error_text ==
-          "the run is too long: 1 frames of up to 3 shapes may cost 5.01e+09 pair tests, more than the 5e+09 a run may "
+          "the run is too long: 1 frame of up to 3 shapes may cost 5.01e+09 pair tests, more than the 5e+09 a run may "
           "(fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)\n");
     CHECK(folder.files() == std::vector<std::string>{"scene.json", "stderr.txt", "stdout.txt"});
 }
