@@ -1,5 +1,7 @@
 #include "browser.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <iostream>
@@ -11,7 +13,9 @@
 #include "contact_sheet.h"
 #include "gif_writer.h"
 #include "live.h"
+#include "interruption.h"
 #include "live_window.h"
+#include "message_text.h"
 #include "output_folder.h"
 #include "png_io.h"
 
@@ -128,7 +132,58 @@ private:
     std::unique_ptr<GifWriter> gif_;
 };
 
+// How the budget's figure reads in a message: "3.21e+10".
+std::string rounded(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+// The shapes a run can have at most: those at the start, and one for each press of the
+// keys that add one (F, G: "a new rectangle / circle" in every stage).
+double most_shapes(const StepCost& step, const Options& options) {
+    static const KeySet kAddingKeys = KeySet::parse("f g");
+    return static_cast<double>(step.shapes) + static_cast<double>(options.keys.pressCount(kAddingKeys));
+}
+
+// "1 frame", "480 frames".
+std::string frames_text(int frames) { return std::to_string(frames) + (frames == 1 ? " frame" : " frames"); }
+
+// Why a run goes over its budget, in one line, or nothing when it does not.
+std::optional<std::string> over_budget(const StepCost& step, const Canvas& canvas, const Options& options) {
+    const double device_pixels = static_cast<double>(canvas.width()) * canvas.scale() *
+                                 static_cast<double>(canvas.height()) * canvas.scale();
+    std::string excess;
+    if (device_pixels > kMaxDevicePixels) {
+        excess = "the page is too large: " + std::to_string(canvas.width() * canvas.scale()) + " x " +
+                 std::to_string(canvas.height() * canvas.scale()) + " device pixels at --scale " +
+                 std::to_string(canvas.scale()) + ", more than the " +
+                 std::to_string(static_cast<long>(kMaxDevicePixels)) + " a page may have (a smaller canvas or --scale)";
+    } else if (const double drawn = device_pixels * options.frames; drawn > kMaxPixelsDrawn) {
+        excess = "the run is too long: " + frames_text(options.frames) + " of " + rounded(device_pixels) +
+                 " device pixels draw " + rounded(drawn) + " pixels, more than the " + rounded(kMaxPixelsDrawn) +
+                 " a run may (fewer --frames, a smaller canvas or --scale)";
+    } else if (const double tests = pair_test_bound(step, options); tests > kMaxPairTests) {
+        excess = "the run is too long: " + frames_text(options.frames) + " of up to " +
+                 std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
+                 " pair tests, more than the " + rounded(kMaxPairTests) +
+                 " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";
+    }
+    if (excess.empty()) return std::nullopt;
+    return excess;
+}
+
 }  // namespace
+
+double pair_test_bound(const StepCost& step, const Options& options) {
+    const double run_ms = static_cast<double>(options.frames) * options.frame_ms;
+    const double steps = std::floor(run_ms / (step.dt_s * 1000.0)) + 1.0;
+    const double shapes = most_shapes(step, options);
+    const double pairs = shapes * (shapes - 1.0) / 2.0;
+    const double per_substep = std::max(step.passes, 1) * pairs + shapes;  // the passes, then every shape's move
+    const double drawn = step.draws_pairs ? static_cast<double>(options.frames) * pairs * kDrawnPairCost : 0.0;
+    return steps * std::max(step.substeps, 1) * per_substep + drawn;
+}
 
 Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {
     document.canvas.setScale(options.scale);
@@ -158,6 +213,10 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         std::cerr << kNoGifSupport << '\n';
         return 2;
     }
+    if (const std::optional<std::string> excess = over_budget(scripts.stepCost(), window.document.canvas, options)) {
+        std::cerr << *excess << '\n';
+        return 2;
+    }
     Document& document = window.document;
     Clock& clock = window.clock;
     const fs::path out = OutputFolder::normalized(options.out_dir);
@@ -170,11 +229,15 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
             for (const Key key : options.keys.pressesAt(k)) scripts.onKeyDown(key);
             scripts.onAnimationFrame();
             recorder.after_frame(k, document);
+            stop_if_interrupted();
         }
         recorder.finish();
         folder.commit();
         std::cout << recorder.summary(out) << '\n';
         return 0;
+    } catch (const OutputRefused& error) {
+        std::cerr << "cannot write pictures to " << in_quotes(out.string()) << ": " << error.what() << '\n';
+        return 2;
     } catch (const FileError& error) {
         reason = error.what();
     } catch (const fs::filesystem_error& error) {
@@ -182,7 +245,7 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
     }
     // A failing page script is not ours to report: its exception goes on, and the
     // output folder's staging folder is gone all the same.
-    std::cerr << "cannot write pictures to \"" << out.string() << "\": " << reason << '\n';
+    std::cerr << "cannot write pictures to " << in_quotes(out.string()) << ": " << printable(reason) << '\n';
     return 1;
 }
 

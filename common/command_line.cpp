@@ -21,6 +21,13 @@ namespace {
 
 constexpr double kMaxFrameMs = 10'000.0;  // ten seconds a frame is already a slide show
 
+// The pictures (frame_NNNN.png) and GIF frames a run may write: a thousand pages of
+// the largest canvas are about a gigabyte.
+constexpr int kMostPictures = 1'000;
+
+// How many frames of `frames` are saved when every `every`-th is, from frame 0 on.
+int frames_saved(int frames, int every) { return (frames - 1) / every + 1; }
+
 // The whole of `text` as a T, or nothing. from_chars takes no sign for unsigned types,
 // no '+', no spaces and (here) no trailing characters, so "12abc", " 5" and "-1" for a
 // seed all fail.
@@ -249,9 +256,20 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
         options.every = int_option("--every", every_text, 0, KeyScript::kMaxFrame);
         const bool want_gif = gif_wanted(gif_flag, no_gif_flag, defaults.gif);
+        if (options.every > 0 && frames_saved(options.frames, options.every) > kMostPictures) {
+            throw UsageError("--every: " + std::to_string(options.frames) + " frames would save " +
+                             std::to_string(frames_saved(options.frames, options.every)) + " pictures, more than the " +
+                             std::to_string(kMostPictures) + " a run may (a larger --every, or fewer --frames)");
+        }
         options.gif_every = int_option("--gif-every", gif_every_text, 1, KeyScript::kMaxFrame);
         if (app.count("--gif-every") > 0 && !want_gif) {
             throw UsageError("--gif-every: there is no GIF to space out (add --gif)");
+        }
+        if (want_gif && !live && frames_saved(options.frames, options.gif_every) > kMostPictures) {
+            throw UsageError("--gif-every: " + std::to_string(options.frames) + " frames would make a GIF of " +
+                             std::to_string(frames_saved(options.frames, options.gif_every)) +
+                             " pictures, more than the " + std::to_string(kMostPictures) +
+                             " a run may (a larger --gif-every, fewer --frames, or --no-gif)");
         }
         options.seed = seed_option(seed_text);
         if (app.count("--frame-ms") > 0) {
@@ -281,6 +299,11 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
             throw UsageError("--keys: a key is pressed before frame " + std::to_string(options.keys.lastFrame()) +
                              ", but --frames " + std::to_string(options.frames) + " runs only frames 0 to " +
                              std::to_string(options.frames - 1));
+        }
+        // An empty name is a slip (an unset shell variable), never "no file": refused as
+        // --out "" is, rather than silently running without the scene or the dump.
+        for (const auto& [name, value] : extra) {
+            if (app.count(name) > 0 && value.empty()) throw UsageError(name + ": must name a file (got \"\")");
         }
         options.extra = extra;
         if (live) {

@@ -1,6 +1,9 @@
 #include "keys.h"
 
+#include <algorithm>
 #include <charconv>
+
+#include "message_text.h"
 
 namespace browser {
 namespace {
@@ -22,7 +25,7 @@ std::optional<int> whole_number(std::string_view text, int low, int high) {
 }
 
 [[noreturn]] void reject(std::string_view token, const std::string& reason) {
-    throw KeyScriptError("bad key script token \"" + std::string(token) + "\": " + reason +
+    throw KeyScriptError("bad key script token " + in_quotes(token) + ": " + reason +
                          " (" + kValidKeys + ")");
 }
 
@@ -73,6 +76,7 @@ KeyScript KeyScript::parse(std::string_view script) {
 
     KeyScript result;
     int frame = 0;  // carried from one token to the next, as the grammar says
+    int presses = 0;
     std::size_t pos = 0;
     while (pos < script.size()) {
         if (is_space(script[pos])) {
@@ -102,7 +106,12 @@ KeyScript KeyScript::parse(std::string_view script) {
         }
         if (rest.empty()) reject(token, "a key name must come first");
         const auto key = parse_key(rest);
-        if (!key) reject(token, "unknown key \"" + std::string(rest) + "\"");
+        if (!key) reject(token, "unknown key " + in_quotes(rest));
+        if (count > kMaxPresses - presses) {
+            throw KeyScriptError("the script presses more than " + std::to_string(kMaxPresses) +
+                                 " keys in all (each press may add a shape that every later step works on)");
+        }
+        presses += count;
 
         result.presses_[frame].insert(result.presses_[frame].end(), count, *key);
     }
@@ -130,11 +139,11 @@ KeySet KeySet::parse(std::string_view names) {
             const bool same_kind = first && last && digit_value(*first).has_value() == digit_value(*last).has_value() &&
                                    *first != Key::Comma && *last != Key::Comma;
             if (!same_kind || *first > *last) {
-                throw KeyScriptError("bad key range \"" + std::string(word) + "\" (a range is a-z or 0-9 style)");
+                throw KeyScriptError("bad key range " + in_quotes(word) + " (a range is a-z or 0-9 style)");
             }
         } else {
             first = last = parse_key(word);
-            if (!first) throw KeyScriptError("unknown key \"" + std::string(word) + "\" (" + kValidKeys + ")");
+            if (!first) throw KeyScriptError("unknown key " + in_quotes(word) + " (" + kValidKeys + ")");
         }
         for (int k = static_cast<int>(*first); k <= static_cast<int>(*last); ++k) {
             set.members_.set(static_cast<std::size_t>(k));
@@ -171,6 +180,20 @@ std::string KeySet::text() const {
 std::vector<Key> KeyScript::pressesAt(int frame) const {
     const auto found = presses_.find(frame);
     return found == presses_.end() ? std::vector<Key>{} : found->second;
+}
+
+std::size_t KeyScript::pressCount() const {
+    std::size_t count = 0;
+    for (const auto& [frame, pressed] : presses_) count += pressed.size();
+    return count;
+}
+
+std::size_t KeyScript::pressCount(const KeySet& keys) const {
+    std::size_t count = 0;
+    for (const auto& [frame, pressed] : presses_) {
+        count += static_cast<std::size_t>(std::count_if(pressed.begin(), pressed.end(), [&](Key key) { return keys.contains(key); }));
+    }
+    return count;
 }
 
 int KeyScript::lastFrame() const {

@@ -61,8 +61,11 @@ private:
 class KeyScript {
 public:
     // Limits that keep a typo ("f*1000000000") from making a run allocate or loop for ages.
-    static constexpr int kMaxCount = 10'000;
+    static constexpr int kMaxCount = 2'000;
     static constexpr int kMaxFrame = 10'000'000;
+    // In all, over every token: each press may add a shape (F, G), and every step works
+    // on every pair of shapes.
+    static constexpr int kMaxPresses = 2'000;
 
     KeyScript() = default;
     // Throws KeyScriptError with one line naming the token and listing the valid keys.
@@ -70,6 +73,10 @@ public:
 
     // Keys pressed before frame `frame`, in script order.
     std::vector<Key> pressesAt(int frame) const;
+    // How many presses there are in all.
+    std::size_t pressCount() const;
+    // How many presses there are of the keys in `keys`.
+    std::size_t pressCount(const KeySet& keys) const;
     // The last frame any key is pressed at (-1 for an empty script).
     int lastFrame() const;
     bool empty() const { return presses_.empty(); }

@@ -9,6 +9,8 @@
 #include <system_error>
 
 #include "gif_writer.h"
+#include "interruption.h"
+#include "message_text.h"
 #include "page.h"
 #include "png_io.h"  // FileError
 
@@ -191,6 +193,7 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     while (session.take(screen.nextFrame())) {
         session.refresh();
         screen.show(session.picture());
+        stop_if_interrupted();  // a session with --dump notes Ctrl-C (interruption.h)
     }
     try {
         screen.close();
@@ -210,7 +213,7 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     try {
         write_script(record, script);
     } catch (const FileError& error) {
-        std::cerr << "cannot write the key script to \"" << record.string() << "\": " << error.what()
+        std::cerr << "cannot write the key script to " << in_quotes(record.string()) << ": " << error.what()
                   << "; it was: " << script << '\n';
         return 1;
     }

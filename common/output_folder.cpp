@@ -15,12 +15,15 @@ namespace fs = std::filesystem;
 void check_replaceable(const fs::path& out, const std::string& marker) {
     const std::string name = out.filename().string();
     if (name.empty() || name == "." || name == "..") {
-        throw FileError("the current folder, its parent or the root cannot be replaced; name a folder inside it");
+        throw OutputRefused("the current folder, its parent or the root cannot be replaced; name a folder inside it");
     }
-    if (!fs::exists(out)) return;
-    if (!fs::is_directory(out)) throw FileError("it exists and is not a folder");
+    const fs::file_status status = fs::symlink_status(out);
+    if (!fs::exists(status)) return;
+    // A symbolic link would be replaced by a folder, not followed; a link is not a run's.
+    if (fs::is_symlink(status)) throw OutputRefused("it is a symbolic link, which a run does not replace");
+    if (!fs::is_directory(status)) throw OutputRefused("it exists and is not a folder");
     if (!fs::is_empty(out) && !fs::exists(out / marker)) {
-        throw FileError("it is a folder that a run did not write (it has no " + marker +
+        throw OutputRefused("it is a folder that a run did not write (it has no " + marker +
                         "), so it is left alone; remove it or choose another --out");
     }
 }
@@ -46,11 +49,20 @@ fs::path OutputFolder::normalized(const fs::path& given) {
 OutputFolder::OutputFolder(const fs::path& out, std::string marker)
     : out_(normalized(out)), suffix_(process_suffix()) {
     check_replaceable(out_, marker);
-    if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
+    note_interruptions();
     fs::path staging = out_;
     staging += ".partial" + suffix_;
-    fs::remove_all(staging);  // left over from a crashed run that had our process id
-    fs::create_directory(staging);
+    // Before the run starts, a folder that cannot be made is one more refusal of --out.
+    try {
+        if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
+        remove_stale_leftovers(out_, ".partial-");
+        remove_stale_leftovers(out_, ".old-");
+        fs::remove_all(staging);  // left over from a crashed run that had our process id
+        leftover_.emplace(staging);
+        fs::create_directory(staging);
+    } catch (const fs::filesystem_error& error) {
+        throw OutputRefused(error.code().message());
+    }
     staging_ = std::move(staging);
 }
 
@@ -61,9 +73,10 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
-    if (!fs::exists(out_)) {
+    if (!fs::exists(fs::symlink_status(out_))) {
         fs::rename(staging_, out_);
         committed_ = true;
+        leftover_.reset();
         return;
     }
     fs::path old = out_;
@@ -78,6 +91,7 @@ void OutputFolder::commit() {
         throw;
     }
     committed_ = true;
+    leftover_.reset();
     std::error_code ignored;  // the new files are in place; a leftover old folder is only litter
     fs::remove_all(old, ignored);
 }

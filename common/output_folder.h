@@ -7,16 +7,24 @@
 // Replacing a folder deletes it, so only a folder that an earlier run wrote (it holds
 // the run's marker file, e.g. final.png) or an empty one may be replaced: a mistyped
 // --out must not wipe someone's files.
+//
+// Interrupted by SIGINT or SIGTERM, the run removes the staging folder before it ends
+// (interruption.h); a staging or old folder that a run killed outright left behind is
+// removed by the next run into the same place, once its process is gone.
 
 #include <filesystem>
+#include <optional>
 #include <string>
+
+#include "interruption.h"
 
 namespace browser {
 
 class OutputFolder {
 public:
-    // Checks that `out` may be replaced and makes the staging folder. Throws FileError
-    // (png_io.h) with a one-line reason, or std::filesystem::filesystem_error.
+    // Checks that `out` may be replaced and makes the staging folder. Throws
+    // OutputRefused (png_io.h) with a one-line reason when it may not, or when the
+    // staging folder cannot be made.
     OutputFolder(const std::filesystem::path& out, std::string marker);
     ~OutputFolder();  // removes the staging folder unless commit() has run
     OutputFolder(const OutputFolder&) = delete;
@@ -37,6 +45,7 @@ private:
     std::filesystem::path staging_;
     std::string suffix_;  // "-<process id>": two runs into one folder never share staging
     bool committed_ = false;
+    std::optional<Leftover> leftover_;  // the staging folder, until commit()
 };
 
 }  // namespace browser

@@ -17,7 +17,13 @@
 #include <utility>
 #include <variant>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
+
+#include "message_text.h"
 
 namespace browser {
 
@@ -85,18 +91,48 @@ std::string element_path(const std::string& array, std::size_t index) {
 // ---------------------------------------------------------------------------------------
 // From text to JSON.
 
+// What a scene file may be: a regular file of at most kMaxSceneBytes. Opened without
+// blocking (a FIFO with no writer would wait for ever) and checked with fstat once open
+// (a device, /dev/zero or /dev/urandom, would read without end), then read up to one
+// byte past the limit, so a longer file is refused without reading it all.
 std::string read_text(const fs::path& file) {
     const auto cannot_read = [&](const std::string& reason) {
-        std::string message = file.string();
+        std::string message = printable(file.string());
         throw SceneError(message.append(": cannot read: ").append(reason));
     };
-    std::error_code error;
-    if (!fs::exists(file, error)) cannot_read("no such file");
-    if (fs::is_directory(file, error)) cannot_read("it is a folder");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) cannot_read(std::strerror(errno));
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) cannot_read(std::strerror(errno));
+    const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) {
+        const int error = errno;
+        if (error == ENOENT) cannot_read("no such file");
+        if (error == ELOOP) cannot_read("a loop of symbolic links");
+        cannot_read(std::strerror(error));
+    }
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat status {};
+    if (::fstat(fd, &status) != 0) cannot_read(std::strerror(errno));
+    if (S_ISDIR(status.st_mode)) cannot_read("it is a folder");
+    if (!S_ISREG(status.st_mode)) {
+        cannot_read(S_ISFIFO(status.st_mode) ? "it is a FIFO, not a regular file"
+                    : S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) ? "it is a device, not a regular file"
+                                                                        : "it is not a regular file");
+    }
+    const auto too_long = [&] {
+        cannot_read("longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene file may hold");
+    };
+    if (status.st_size > static_cast<off_t>(kMaxSceneBytes)) too_long();
+    std::string text;
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t got = ::read(fd, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) cannot_read(std::strerror(errno));
+        if (got == 0) break;
+        text.append(buffer, static_cast<std::size_t>(got));
+        if (text.size() > kMaxSceneBytes) too_long();  // the file grew while we read it
+    }
     return text;
 }
 
@@ -119,7 +155,7 @@ std::string line_and_column(std::string_view text, std::size_t bytes_read) {
 std::string parser_reason(const json::exception& error) {
     const std::string_view message = error.what();
     const std::size_t colon = message.find(": ", message.find(']'));
-    return std::string(colon == std::string_view::npos ? message : message.substr(colon + 2));
+    return printable(colon == std::string_view::npos ? message : message.substr(colon + 2));
 }
 
 // A first pass over the text that builds nothing and only follows the JSON path. The
@@ -157,7 +193,7 @@ public:
         constexpr int kNumberOverflow = 406;  // nlohmann's out_of_range.406
         if (error.id == kNumberOverflow) {
             std::string problem = "must be a finite number (got ";
-            refusal = Refusal{path(), problem.append(shortened(token)).append(")")};
+            refusal = Refusal{path(), problem.append(printable(shortened(token))).append(")")};
         } else {
             std::string problem = "malformed JSON: ";
             refusal = Refusal{line_and_column(text_, bytes_read), problem.append(parser_reason(error))};
@@ -173,7 +209,15 @@ private:
         std::set<std::string> keys_seen;
     };
 
+    // The parser itself keeps its nesting on the heap, but a document deeper than a
+    // scene can use would be refused later anyway, and printing or walking it would
+    // recurse as deep as it goes; so it stops here, at the first level too many.
     bool open(bool is_array) {
+        if (open_.size() == kMaxNesting) {
+            refusal = Refusal{path(), "nested deeper than a scene can use (" + std::to_string(kMaxNesting) +
+                                          " levels: {\"bodies\": [{\"center\": [x, y]}]})"};
+            return false;
+        }
         open_.push_back(Container{.is_array = is_array});
         return true;
     }
@@ -204,9 +248,6 @@ json parse(const std::string& text) {
 
 // ---------------------------------------------------------------------------------------
 // Values.
-
-constexpr NumberRule kNotNegative{[](double v) { return std::isfinite(v) && v >= 0.0; },
-                                  "must be a finite number >= 0"};
 
 double number(const json& value, const std::string& path, const NumberRule& rule) {
     if (!value.is_number() || !rule.accepts(value.get<double>())) refuse_value(path, rule.words, value);
@@ -311,18 +352,18 @@ constexpr bool kRequired = true;
 
 std::vector<BodyKey> body_keys(ShapeKind shape) {
     using B = BodyDescription;
-    static const BodyKey kRectangleSizes[] = {{"width", &B::width, rules::kPositive, kRequired},
-                                              {"height", &B::height, rules::kPositive, kRequired}};
-    static const BodyKey kCircleSizes[] = {{"radius", &B::radius, rules::kPositive, kRequired}};
-    static const BodyKey kAttributes[] = {{"mass", &B::mass, kNotNegative},
-                                          {"friction", &B::friction, kNotNegative},
+    static const BodyKey kRectangleSizes[] = {{"width", &B::width, rules::kSize, kRequired},
+                                              {"height", &B::height, rules::kSize, kRequired}};
+    static const BodyKey kCircleSizes[] = {{"radius", &B::radius, rules::kSize, kRequired}};
+    static const BodyKey kAttributes[] = {{"mass", &B::mass, rules::kMass},
+                                          {"friction", &B::friction, rules::kFriction},
                                           {"restitution", &B::restitution, rules::kFraction},
-                                          {"angle", &B::angle},
-                                          {"velocity", &B::velocity},
-                                          {"angular_velocity", &B::angular_velocity}};
+                                          {"angle", &B::angle, rules::kAngle},
+                                          {"velocity", &B::velocity, rules::kSpeed},
+                                          {"angular_velocity", &B::angular_velocity, rules::kTurnRate}};
     const std::span<const BodyKey> sizes =
         shape == ShapeKind::rectangle ? std::span<const BodyKey>(kRectangleSizes) : std::span<const BodyKey>(kCircleSizes);
-    std::vector<BodyKey> keys{{"center", &B::center, rules::kFinite, kRequired}};
+    std::vector<BodyKey> keys{{"center", &B::center, rules::kPosition, kRequired}};
     keys.reserve(1 + sizes.size() + std::size(kAttributes));
     for (const BodyKey& key : sizes) keys.push_back(key);
     for (const BodyKey& key : kAttributes) keys.push_back(key);
@@ -371,6 +412,10 @@ BodyDescription read_body(const json& object, const std::string& path) {
 
 std::vector<BodyDescription> read_bodies(const json& list, const std::string& path) {
     if (!list.is_array()) refuse_value(path, "must be an array [...] of bodies", list);
+    if (list.size() > kMaxBodies) {
+        refuse(path, "more than " + std::to_string(kMaxBodies) + " bodies (got " + std::to_string(list.size()) +
+                         "); every step tests every pair of them");
+    }
     std::vector<BodyDescription> bodies;
     for (std::size_t i = 0; i < list.size(); ++i) bodies.push_back(read_body(list[i], element_path(path, i)));
     return bodies;
@@ -396,9 +441,12 @@ std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const Wo
 std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
                                              std::span<const WorldKey> world_keys) {
     try {
+        if (text.size() > kMaxSceneBytes) {
+            refuse("", "longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene may hold");
+        }
         return read_scene(parse(text), world_keys);
     } catch (const Refusal& refusal) {
-        std::string message(source);
+        std::string message = printable(source);
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);
         throw SceneError(message.append(": ").append(refusal.problem));
     }

@@ -59,11 +59,45 @@ struct NumberRule {
     const char* words;
 };
 
+// How much a scene may hold: every run fits in memory and ends (docs/scene_format.md).
+// 2,500 bodies (the bench's largest scene has 2,003) take about 650 KB of JSON.
+inline constexpr std::size_t kMaxSceneBytes = 2 << 20;  // 2 MiB
+inline constexpr std::size_t kMaxBodies = 2500;
+// {"bodies": [{"center": [x, y]}]} is as deep as a scene goes: four levels.
+inline constexpr std::size_t kMaxNesting = 4;
+
 // The rules the book's settings need; a stage may write its own for its own keys.
+//
+// No number of an accepted scene may make a NaN or an infinity. Every quantity a body
+// derives from them is then a plain double: with masses in [1e-3, 1e6] and sizes in
+// [0.01, 1e5] px, the inverse mass lies in [1e-6, 1e3] and the moment of inertia (m r^2
+// / 2, m (w^2 + h^2) / 12) in [1e-8, 1e16], its inverse in [1e-16, 1e8]: finite and > 0
+// for every moving body. The ranges are those the extremes suite
+// (tests/features/extremes_test.cpp) runs and finds finite: shapes of 0.01 px to 1e5 px,
+// masses of 1 against 1e6, speeds up to 1e6 px/s.
 namespace rules {
 inline constexpr NumberRule kFinite{[](double v) { return std::isfinite(v); }, "must be a finite number"};
 inline constexpr NumberRule kPositive{[](double v) { return std::isfinite(v) && v > 0.0; },
                                       "must be a finite number > 0"};
+inline constexpr NumberRule kNotNegative{[](double v) { return std::isfinite(v) && v >= 0.0; },
+                                         "must be a finite number >= 0"};
+inline constexpr NumberRule kPosition{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                      "must be a number in [-1e6, 1e6] (px)"};
+inline constexpr NumberRule kSize{[](double v) { return v >= 0.01 && v <= 1e5; },
+                                  "must be a number in [0.01, 1e5] (px)"};
+// 0 makes a static body; a moving one needs an inverse mass and inertia to divide by.
+inline constexpr NumberRule kMass{[](double v) { return v == 0.0 || (v >= 1e-3 && v <= 1e6); },
+                                  "must be 0 (static) or a number in [1e-3, 1e6]"};
+inline constexpr NumberRule kFriction{[](double v) { return v >= 0.0 && v <= 100.0; },
+                                      "must be a number in [0, 100]"};
+inline constexpr NumberRule kAngle{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                   "must be a number in [-1e6, 1e6] (rad)"};
+inline constexpr NumberRule kSpeed{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                   "must be a number in [-1e6, 1e6] (px/s)"};
+inline constexpr NumberRule kTurnRate{[](double v) { return v >= -1e4 && v <= 1e4; },
+                                      "must be a number in [-1e4, 1e4] (rad/s)"};
+inline constexpr NumberRule kAcceleration{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                          "must be a number in [-1e6, 1e6] (px/s^2)"};
 inline constexpr NumberRule kFraction{[](double v) { return v >= 0.0 && v <= 1.0; },
                                       "must be a finite number in [0, 1]"};
 // The canvas is a picture in memory: 4096 x 4096 px is 64 MiB.

@@ -10,27 +10,39 @@
 // significant digits, which is what it takes for std::strtod to give back the very same
 // double; a simulation that blew up shows as nan or inf, which strtod reads too.
 //
-// A dump grows row by row over a whole run, so it is written to "<path>.partial" and only
-// finish() renames it to <path>. A run that stops with an error therefore never leaves a
-// file that looks like a complete dump: the destructor removes the partial file (only a
-// crash can leave one behind, under its telling name), and a dump an earlier run wrote
-// to <path> stays as it was until the new one is complete.
+// A dump grows row by row over a whole run, so it is written to "<path>.partial-<pid>"
+// and only finish() renames it to <path>. A run that stops with an error therefore never
+// leaves a file that looks like a complete dump: the destructor removes the partial file
+// (and so does an interruption, interruption.h; only a crash can leave one behind, under
+// its telling name, which the next dump to <path> removes once that process is gone), and
+// a dump an earlier run wrote to <path> stays as it was until the new one is complete.
+//
+// <path> must be a regular file or nothing yet: a symbolic link, a FIFO, a device or a
+// folder is refused (OutputRefused), never replaced. A dump inside the run's --out folder
+// is written beside that folder and moved into it by finish(), after the run has put its
+// new folder in place of the old one.
 
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
-#include "png_io.h"  // FileError
+#include "interruption.h"
+#include "png_io.h"  // FileError, OutputRefused
 #include "vec2.h"
 
 namespace browser {
 
 class StateDump {
 public:
-    // Creates "<path>.partial" and writes the header line. Throws FileError, with a
-    // one-line message naming `path`, when it cannot.
-    explicit StateDump(std::filesystem::path path);
+    // Creates the partial file and writes the header line. `out` is the run's --out
+    // folder ("" for none). Throws OutputRefused when <path> may not be written (see
+    // above), FileError when the partial file cannot be created; each one line naming
+    // `path`.
+    explicit StateDump(std::filesystem::path path, const std::filesystem::path& out = {});
     // Removes the partial file unless finish() succeeded.
     ~StateDump();
 
@@ -54,8 +66,16 @@ private:
 
     std::filesystem::path path_;
     std::filesystem::path partial_;
+    std::optional<Leftover> leftover_;  // partial_, should the run be interrupted
+    bool inside_out_ = false;          // path_ is inside the --out folder
     std::ofstream out_;
     bool finished_ = false;
+};
+
+// A step that made a number no double can be: the run stops, naming the body and the
+// step, and writes nothing (exit status 3, docs/scene_format.md).
+struct NonFiniteState : std::runtime_error {
+    NonFiniteState(long step, std::size_t index, std::string_view shape);
 };
 
 }  // namespace browser

@@ -6,14 +6,12 @@
 
 namespace browser {
 
-std::string in_quotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
-
 std::string one_line(std::string text) {
     for (char& c : text) {
         if (c == '\n' || c == '\r') c = ' ';
     }
     while (!text.empty() && text.back() == ' ') text.pop_back();
-    return text;
+    return printable(text);
 }
 
 bool parse_strictly(CLI::App& app, const std::vector<std::string>& arguments) {

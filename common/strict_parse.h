@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "message_text.h"  // in_quotes
+
 namespace CLI {
 class App;
 }
@@ -19,8 +21,8 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-std::string in_quotes(std::string_view text);
-// CLI11's messages are made for its own multi-line report; we print one line.
+// CLI11's messages are made for its own multi-line report; we print one line, with
+// what the reader typed in it made printable (message_text.h).
 std::string one_line(std::string text);
 
 // Parses `arguments` (as CLI11 takes them: last first, without the program name) into

@@ -55,6 +55,7 @@ public:
     Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
     void onAnimationFrame() override { core_.runGameLoop(); }
+    browser::StepCost stepCost() const override { return engine::stepCost(core_); }
 
 private:
     engine::Core& core_;
@@ -66,17 +67,29 @@ int pixels(double size) { return static_cast<int>(std::ceil(size)); }
 
 // Runs the page, writing the state dump alongside when one is asked for: step 0 as
 // built, then a row per body after every fixed step. The dump is only completed when
-// the whole run succeeded.
+// the whole run succeeded. A step that leaves a number no double can be stops the run
+// (exit status 3) before it draws a NaN picture; nothing is written then.
 int runPage(Page& page, browser::Window& window, engine::Core& core, const browser::Options& options) {
     const std::string& dump_file = options.extra.at("--dump");
-    if (dump_file.empty()) return browser::run(page, window, options);
     try {
-        browser::StateDump dump(dump_file);
-        engine::dumpState(dump, core);
-        core.onStep([&] { engine::dumpState(dump, core); });
+        std::optional<browser::StateDump> dump;
+        if (!dump_file.empty()) {
+            dump.emplace(dump_file, options.out_dir);
+            engine::dumpState(*dump, core);
+        }
+        core.onStep([&] {
+            if (dump) engine::dumpState(*dump, core);
+            engine::checkFinite(core);
+        });
         const int status = browser::run(page, window, options);
-        if (status == 0) dump.finish();
+        if (status == 0 && dump) dump->finish();
         return status;
+    } catch (const browser::NonFiniteState& error) {
+        std::cerr << error.what() << '\n';
+        return 3;
+    } catch (const browser::OutputRefused& error) {
+        std::cerr << error.what() << '\n';
+        return 2;
     } catch (const browser::FileError& error) {
         std::cerr << error.what() << '\n';
         return 1;

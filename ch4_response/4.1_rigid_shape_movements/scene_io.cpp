@@ -1,5 +1,9 @@
 #include "scene_io.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 #include "circle.h"
 #include "rectangle.h"
 
@@ -25,7 +29,7 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
     return {
         {"width", world.width, rules::kCanvasSize},
         {"height", world.height, rules::kCanvasSize},
-        {"gravity", world.gravity},
+        {"gravity", world.gravity, rules::kAcceleration},
         {"dt", world.dt, rules::kTimeStep},
         {"movement", world.movement},
     };
@@ -52,6 +56,22 @@ void dumpState(browser::StateDump& dump, const Core& core) {
         dump.row(core.stepCount(), i, browser::shape_name(kindOf(shape)), shape.center(), shape.angle(),
                  shape.velocity(), shape.angularVelocity());
     }
+}
+
+void checkFinite(const Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        const double numbers[] = {shape.center().x,   shape.center().y,   shape.angle(),
+                                  shape.velocity().x, shape.velocity().y, shape.angularVelocity()};
+        if (!std::all_of(std::begin(numbers), std::end(numbers), [](double v) { return std::isfinite(v); })) {
+            throw browser::NonFiniteState(core.stepCount(), i, browser::shape_name(kindOf(shape)));
+        }
+    }
+}
+
+browser::StepCost stepCost(const Core& core) {
+    const WorldSettings& world = core.settings();
+    return {.dt_s = world.dt, .shapes = core.objectCount()};
 }
 
 }  // namespace engine

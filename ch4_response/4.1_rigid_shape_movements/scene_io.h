@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "browser.h"
 #include "core.h"
 #include "scene_file.h"
 #include "state_dump.h"
@@ -32,5 +33,13 @@ void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies)
 
 // One row per object for the core's current step (0 before any update).
 void dumpState(browser::StateDump& dump, const Core& core);
+
+// The last guard against a scene beyond what the engine can compute: throws
+// browser::NonFiniteState naming the first object whose position or velocity is not a
+// finite number.
+void checkFinite(const Core& core);
+
+// What one fixed step of the core's world costs at most, for the run's budget.
+browser::StepCost stepCost(const Core& core);
 
 }  // namespace engine

@@ -220,11 +220,11 @@ TEST_CASE("browser: missing parent folders are created") {
     CHECK(fs::exists(out / "final.png"));
 }
 
-TEST_CASE("browser: an unwritable output folder gives status 1 and leaves nothing behind") {
+TEST_CASE("browser: an output folder that cannot be made is refused with status 2, leaving nothing behind") {
     ScratchFolder temp("browser_test");
     std::ofstream(temp.path / "plain_file") << "not a folder\n";
     const Result result = run(options_for(temp.path / "plain_file" / "out", 3, 1));
-    CHECK(result.status == 1);
+    CHECK(result.status == 2);
     CHECK(is_one_line(result.err));
     CHECK_THAT(result.err, Catch::StartsWith("cannot write pictures to \""));
     CHECK(result.out.empty());
@@ -238,7 +238,7 @@ TEST_CASE("browser: a folder that no run wrote is left alone") {
     std::ofstream(out / "thesis.txt") << "years of work\n";
 
     const Result result = run(options_for(out, 1, 0));
-    CHECK(result.status == 1);
+    CHECK(result.status == 2);  // refused, as every other bad option is
     CHECK(is_one_line(result.err));
     CHECK_THAT(result.err, Catch::Contains("important"));
     CHECK(names_in(out) == std::vector<std::string>{"thesis.txt"});
@@ -247,12 +247,18 @@ TEST_CASE("browser: a folder that no run wrote is left alone") {
     SECTION("and so is a file in the folder's place") {
         const fs::path file = temp.path / "file.png";
         std::ofstream(file) << "x";
-        CHECK(run(options_for(file, 1, 0)).status == 1);
+        CHECK(run(options_for(file, 1, 0)).status == 2);
         CHECK(fs::is_regular_file(file));
     }
+    SECTION("and so is a symbolic link in the folder's place, even to a run's folder") {
+        REQUIRE(run(options_for(temp.path / "real", 1, 0)).status == 0);
+        fs::create_directory_symlink(temp.path / "real", temp.path / "link");
+        CHECK(run(options_for(temp.path / "link", 1, 0)).status == 2);
+        CHECK(fs::is_symlink(temp.path / "link"));
+    }
     SECTION("and so are the current and parent folders") {
-        CHECK(run(options_for(".", 1, 0)).status == 1);
-        CHECK(run(options_for("..", 1, 0)).status == 1);
+        CHECK(run(options_for(".", 1, 0)).status == 2);
+        CHECK(run(options_for("..", 1, 0)).status == 2);
     }
 }
 
@@ -263,4 +269,86 @@ TEST_CASE("browser: a failing page script leaves no staging folder") {
     ThrowingScripts scripts;
     CHECK_THROWS_AS(browser::run(scripts, window, options_for(out, 2, 1)), std::runtime_error);
     CHECK(fs::is_empty(temp.path));
+}
+
+TEST_CASE("browser: staging folders of runs that are gone are removed; a living run's and strangers' stay") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    // A process id that names no process: one past the largest the kernel hands out.
+    const std::string gone = "4194305";
+    fs::create_directories(temp.path / ("out.partial-" + gone));
+    fs::create_directories(temp.path / ("out.old-" + gone));
+    fs::create_directories(temp.path / "out.partial-1");         // init's: alive
+    fs::create_directories(temp.path / ("out.partial-" + gone + "x"));  // not a process id: not ours
+    std::ofstream(temp.path / ("final.png.partial-" + gone)) << "x";  // another target's: not this one's
+    REQUIRE(run(options_for(out, 1, 0)).status == 0);
+    CHECK(names_in(temp.path) == std::vector<std::string>{"final.png.partial-" + gone, "out", "out.partial-1",
+                                                          "out.partial-" + gone + "x"});
+}
+
+namespace {
+
+// A page whose every step, it says, works on `shapes` shapes at dt = 1/60 s.
+class CostlyScripts : public browser::PageScripts {
+public:
+    explicit CostlyScripts(std::size_t shapes) : shapes_(shapes) {}
+    void onKeyDown(Key) override {}
+    void onAnimationFrame() override {}
+    browser::StepCost stepCost() const override { return {.passes = 15, .shapes = shapes_, .draws_pairs = false}; }
+
+private:
+    std::size_t shapes_;
+};
+
+}  // namespace
+
+TEST_CASE("browser: the pair-test bound counts steps, sub-steps, passes and the pairs of every shape a press may add") {
+    browser::Options options = options_for("unused", 10, 0, "f*3");
+    options.frame_ms = 1000.0 / 60.0;
+    // 10 frames of one 1/60 s step each, plus the one the clock's rounding may add: 11
+    // steps; 7 + 3 shapes: 45 pairs, 15 passes each, and 10 moves.
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7, .draws_pairs = false}, options) == 11.0 * (15 * 45 + 10));
+    // Sub-steps multiply it all; dt = 1/600 s runs ten steps a frame.
+    CHECK(browser::pair_test_bound({.dt_s = 1.0 / 600.0, .substeps = 4, .passes = 0, .shapes = 7, .draws_pairs = false},
+                                   options) == 101.0 * 4 * (45 + 10));
+    // A page that draws its collisions draws each pair once a frame, at kDrawnPairCost.
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7}, options) ==
+          11.0 * (15 * 45 + 10) + 10 * 45 * browser::kDrawnPairCost);
+    // Only F and G add shapes: other presses cost nothing more.
+    browser::Options moves = options_for("unused", 10, 0, "d*100");
+    moves.frame_ms = 1000.0 / 60.0;
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 10, .draws_pairs = false}, moves) == 11.0 * (15 * 45 + 10));
+}
+
+TEST_CASE("browser: a run over its budget is refused with status 2 before anything is written") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    struct Case { std::size_t shapes; int frames; int width, height, scale; const char* says; };
+    const Case cases[] = {
+        // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests.
+        {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests"},
+        {0, 1, 4096, 4096, 2, "the page is too large: 8192 x 8192 device pixels at --scale 2"},
+        // 4096 x 4096 px, 29,803 frames: 5.0e11 pixels drawn.
+        {0, 29803, 4096, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.says);
+        browser::Options options = options_for(out, c.frames, 0);
+        options.frame_ms = 1000.0 / 60.0;
+        options.scale = c.scale;
+        browser::Window window(options, browser::Document{browser::Canvas(c.width, c.height), ""});
+        CostlyScripts scripts(c.shapes);
+        std::ostringstream err;
+        std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
+        const int status = browser::run(scripts, window, options);
+        std::cerr.rdbuf(old_err);
+        CHECK(status == 2);
+        CHECK(is_one_line(err.str()));
+        CHECK_THAT(err.str(), Catch::StartsWith(c.says));
+        CHECK(fs::is_empty(temp.path));
+    }
+    // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests (never run here).
+    browser::Options inside = options_for(out, 100, 0);
+    inside.frame_ms = 1000.0 / 60.0;
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <= browser::kMaxPairTests);
 }

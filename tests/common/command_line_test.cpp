@@ -211,6 +211,38 @@ TEST_CASE("command_line: unknown options, stray words and missing values") {
     check_rejected({"--frames", "5", "--frames", "6"}, "--frames");
 }
 
+TEST_CASE("command_line: whatever the reader typed, a refusal is one line, the text escaped and shortened") {
+    // A line break, a terminal's escape sequence, bytes that are not UTF-8, a long value.
+    check_rejected({"--frames", "1\n2"}, R"(--frames: must be a whole number from 1 to 10000000 (got "1\n2"))");
+    check_rejected({"--seed", "7\r\n"}, R"((got "7\r\n"))");
+    check_rejected({"--frame-ms", "16\x1b[2J"}, R"((got "16\x1b[2J"))");
+    check_rejected({"--bo\ngus"}, R"(unknown option "--bo\ngus")");
+    check_rejected({"stray\xff\xfe"}, R"(unexpected argument "stray\xff\xfe")");
+    const Outcome long_value = parse({"--frames", std::string(100'000, '9')});
+    CHECK(long_value.parsed.exit_status == 2);
+    CHECK(long_value.err.size() < 300);
+    CHECK_THAT(long_value.err, Catch::Contains("999...999"));
+}
+
+TEST_CASE("command_line: an empty file name is refused for every option that takes one") {
+    check_rejected({"--scene", ""}, R"(--scene: must name a file (got ""))");
+    check_rejected({"--dump", ""}, R"(--dump: must name a file (got ""))");
+    check_rejected({"--out", ""}, R"(--out: must name a folder (got ""))");
+}
+
+TEST_CASE("command_line: more pictures than a run may write are refused") {
+    // 1,000 pictures are allowed: frames 0, 10, ..., 9990.
+    CHECK(parse({"--frames", "10000", "--every", "10"}).parsed.exit_status == 0);
+    check_rejected({"--frames", "10001", "--every", "10"},
+                   "--every: 10001 frames would save 1001 pictures, more than the 1000 a run may");
+    check_rejected({"--frames", "10000000", "--every", "1"}, "--every: 10000000 frames would save 10000000 pictures");
+    if (browser::gif_supported()) {
+        CHECK(parse({"--frames", "2000", "--gif", "--every", "0"}).parsed.exit_status == 0);
+        check_rejected({"--frames", "2001", "--gif", "--every", "0"},
+                       "--gif-every: 2001 frames would make a GIF of 1001 pictures, more than the 1000 a run may");
+    }
+}
+
 TEST_CASE("command_line: the program name is argv[0]'s file name, or the stage id without one") {
     const char* const argv[] = {nullptr};
     CapturedOutput captured;

@@ -105,9 +105,26 @@ TEST_CASE("key_script: mixed case, digits, comma and any whitespace") {
 TEST_CASE("key_script: the limits themselves are accepted") {
     const std::string count = std::to_string(KeyScript::kMaxCount);
     const std::string frame = std::to_string(KeyScript::kMaxFrame);
-    const KeyScript keys = KeyScript::parse("x*" + count + "@" + frame + " y@0");
+    const KeyScript keys = KeyScript::parse("x*" + count + "@" + frame);
     CHECK(keys.pressesAt(KeyScript::kMaxFrame).size() == static_cast<std::size_t>(KeyScript::kMaxCount));
-    CHECK(keys.pressesAt(0) == Keys{Key::Y});
+    CHECK(keys.pressCount() == static_cast<std::size_t>(KeyScript::kMaxPresses));
+}
+
+TEST_CASE("key_script: more presses in all than a run can afford are refused, however they are spread") {
+    // kMaxPresses - 1 in one token, then two more: one past the limit.
+    const std::string script = "f*" + std::to_string(KeyScript::kMaxPresses - 1) + " g h@3";
+    const std::string message = error_of(script);
+    CHECK(message == "the script presses more than " + std::to_string(KeyScript::kMaxPresses) +
+                         " keys in all (each press may add a shape that every later step works on)");
+    CHECK(KeyScript::parse("f*" + std::to_string(KeyScript::kMaxPresses - 1) + " g").pressCount() ==
+          static_cast<std::size_t>(KeyScript::kMaxPresses));
+}
+
+TEST_CASE("key_script: a token with control characters or bytes that are not UTF-8 is shown escaped") {
+    const std::string message = error_of("f\x1b[2J g\xff");
+    CHECK(message.find('\x1b') == std::string::npos);
+    CHECK_THAT(message, Catch::Contains(R"("f\x1b[2J")"));
+    CHECK(error_of("g\xff").find(R"("g\xff")") != std::string::npos);
 }
 
 TEST_CASE("key_script: every bad token is named in a one-line message with the valid keys") {
@@ -186,6 +203,9 @@ TEST_CASE("key_script: a script written as text reads back to the same presses")
     // More presses in a row than one token's count may hold are split over tokens.
     KeyScript held;
     for (int i = 0; i < KeyScript::kMaxCount + 5; ++i) held.press(7, Key::S);
-    CHECK(held.text() == "s*10000@7 s*5@7");
-    CHECK(KeyScript::parse(held.text()) == held);
+    CHECK(held.text() == "s*" + std::to_string(KeyScript::kMaxCount) + "@7 s*5@7");
+    // One token may hold as many presses as a whole script: that many and more are
+    // refused on replay, in one line, like any script too long.
+    static_assert(KeyScript::kMaxCount == KeyScript::kMaxPresses);
+    CHECK_THROWS_AS(KeyScript::parse(held.text()), browser::KeyScriptError);
 }

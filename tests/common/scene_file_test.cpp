@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -180,14 +181,21 @@ TEST_CASE("scene_file: edge values that are allowed load") {
     ScratchFolder folder("edges");
     const auto scene = load_scene(folder.write("scene.json", R"({
         "world": {"relaxation_iterations": 0, "correction_rate": 1, "gravity": [-1e300, 0]},
-        "bodies": [{"shape": "circle", "center": [0, 0], "radius": 1e-300,
-                    "mass": 0, "friction": 0, "restitution": 1, "angle": -7}]})"),
+        "bodies": [{"shape": "circle", "center": [-1e6, 1e6], "radius": 0.01,
+                    "mass": 0, "friction": 0, "restitution": 1, "angle": -1e6},
+                   {"shape": "rectangle", "center": [0, 0], "width": 1e5, "height": 0.01, "mass": 1e-3,
+                    "friction": 100, "angle": 1e6, "velocity": [-1e6, 1e6], "angular_velocity": -1e4},
+                   {"shape": "circle", "center": [0, 0], "radius": 1e5, "mass": 1e6, "angular_velocity": 1e4}]})"),
                                   kDemoDefaults);
     CHECK(scene.world.relaxation_iterations == 0);
     CHECK(scene.world.correction_rate == 1.0);
-    CHECK(scene.world.gravity.x == -1e300);
-    CHECK(scene.bodies.at(0).radius == 1e-300);
+    CHECK(scene.world.gravity.x == -1e300);  // this test's own world key takes any finite number
+    CHECK(scene.bodies.at(0).radius == 0.01);
     CHECK(scene.bodies.at(0).restitution == 1.0);
+    CHECK(scene.bodies.at(1).mass == 1e-3);
+    CHECK(scene.bodies.at(1).velocity == Vec2{-1e6, 1e6});
+    CHECK(scene.bodies.at(2).radius == 1e5);
+    CHECK(scene.bodies.at(2).mass == 1e6);
 
     // JSON does not tell 15 from 15.0; neither does a count.
     CHECK(load_scene(folder.write("float.json", R"({"world": {"relaxation_iterations": 15.0}})"), kDemoDefaults)
@@ -201,7 +209,7 @@ TEST_CASE("scene_file: the format's own example of a refusal, word for word") {
         {"shape": "circle", "center": [0, 0], "radius": 1},
         {"shape": "circle", "center": [0, 0], "radius": 1},
         {"shape": "circle", "center": [0, 0], "radius": -2}]})");
-    CHECK(refusal(file) == file.string() + ": bodies[3].radius: must be a finite number > 0 (got -2)");
+    CHECK(refusal(file) == file.string() + ": bodies[3].radius: must be a number in [0.01, 1e5] (px) (got -2)");
 }
 
 TEST_CASE("scene_file: a file that cannot be read is refused") {
@@ -269,7 +277,7 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
          R"(bodies[0].shape: must be "rectangle" or "circle" (got "triangle"))"},
         {body(R"("shape": 3)"), R"(bodies[0].shape: must be "rectangle" or "circle" (got 3))"},
         // Wrong types.
-        {body(circle + R"(, "mass": "5")"), R"(bodies[0].mass: must be a finite number >= 0 (got "5"))"},
+        {body(circle + R"(, "mass": "5")"), R"(bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got "5"))"},
         {world(R"("movement": 1)"), "world.movement: must be true or false (got 1)"},
         {world(R"("positional_correction": "yes")"),
          R"(world.positional_correction: must be true or false (got "yes"))"},
@@ -277,7 +285,7 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
         {world(R"("gravity": [0, 1, 2])"), "world.gravity: must be an array of two numbers [x, y] (got [0,1,2])"},
         {world(R"("gravity": {"x": 0, "y": 1})"), "world.gravity: must be an array of two numbers [x, y] (got {"},
         {world(R"("gravity": [0, "down"])"), R"(world.gravity[1]: must be a finite number (got "down"))"},
-        {body(circle + R"(, "velocity": [null, 0])"), "bodies[0].velocity[0]: must be a finite number (got null)"},
+        {body(circle + R"(, "velocity": [null, 0])"), "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got null)"},
         {world(R"("dt": true)"), "world.dt: must be a number in [1e-5, 1] (got true)"},
         // Numbers too large for a double; JSON has no way to write NaN or Infinity at all.
         {world(R"("gravity": [0, 1e999])"), "world.gravity[1]: must be a finite number (got 1e999)"},
@@ -287,13 +295,26 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
          "world.dt: must be a finite number (got 1000000000000000000000000000000000000...)"},
         // Out of range.
         {body(R"("shape": "rectangle", "center": [0, 0], "width": 0, "height": 1)"),
-         "bodies[0].width: must be a finite number > 0 (got 0)"},
+         "bodies[0].width: must be a number in [0.01, 1e5] (px) (got 0)"},
         {body(R"("shape": "rectangle", "center": [0, 0], "width": 1, "height": -1.5)"),
-         "bodies[0].height: must be a finite number > 0 (got -1.5)"},
+         "bodies[0].height: must be a number in [0.01, 1e5] (px) (got -1.5)"},
         {body(R"("shape": "circle", "center": [0, 0], "radius": 0)"),
-         "bodies[0].radius: must be a finite number > 0 (got 0)"},
-        {body(circle + R"(, "mass": -1)"), "bodies[0].mass: must be a finite number >= 0 (got -1)"},
-        {body(circle + R"(, "friction": -0.1)"), "bodies[0].friction: must be a finite number >= 0 (got -0.1)"},
+         "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 0)"},
+        {body(circle + R"(, "mass": -1)"), "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got -1)"},
+        {body(circle + R"(, "friction": -0.1)"), "bodies[0].friction: must be a number in [0, 100] (got -0.1)"},
+        // Numbers whose derived quantities no double holds, or that the engine was never
+        // shown to survive (issue 15): each refused before anything is built.
+        {body(R"("shape": "circle", "center": [0, 0], "radius": 1e-155)"),
+         "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e-155)"},
+        {body(R"("shape": "circle", "center": [0, 0], "radius": 1e300)"),
+         "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e+300)"},
+        {body(circle + R"(, "mass": 1e-320)"), "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 1e-320)"},
+        {body(circle + R"(, "mass": 1e7)"), "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 10000000.0)"},
+        {body(circle + R"(, "velocity": [1e308, 0])"), "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got 1e+308)"},
+        {body(circle + R"(, "angular_velocity": -1e5)"), "bodies[0].angular_velocity: must be a number in [-1e4, 1e4] (rad/s) (got -100000.0)"},
+        {body(R"("shape": "circle", "center": [2e6, 0], "radius": 1)"), "bodies[0].center[0]: must be a number in [-1e6, 1e6] (px) (got 2000000.0)"},
+        {body(circle + R"(, "angle": 1e7)"), "bodies[0].angle: must be a number in [-1e6, 1e6] (rad) (got 10000000.0)"},
+        {body(circle + R"(, "friction": 101)"), "bodies[0].friction: must be a number in [0, 100] (got 101)"},
         {body(circle + R"(, "restitution": -0.1)"),
          "bodies[0].restitution: must be a finite number in [0, 1] (got -0.1)"},
         {body(circle + R"(, "restitution": 1.5)"),
@@ -340,6 +361,66 @@ TEST_CASE("scene_file: messages stay one short line whatever the file holds") {
     CHECK(message.find('\n') == std::string::npos);
     CHECK(message.size() < long_value.string().size() + 100);
     CHECK(message.find("...)") != std::string::npos);
+}
+
+TEST_CASE("scene_file: a file that is not a regular file is refused without reading it") {
+    ScratchFolder folder("not_regular");
+    // A FIFO with no writer would block a plain open for ever; /dev/zero never ends.
+    const fs::path fifo = folder.path / "fifo.json";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK(refusal(fifo) == fifo.string() + ": cannot read: it is a FIFO, not a regular file");
+    CHECK(refusal("/dev/zero") == "/dev/zero: cannot read: it is a device, not a regular file");
+    // A loop of symbolic links is not a missing file.
+    const fs::path loop = folder.path / "a.json";
+    fs::create_symlink(folder.path / "b.json", loop);
+    fs::create_symlink(loop, folder.path / "b.json");
+    CHECK(refusal(loop) == loop.string() + ": cannot read: a loop of symbolic links");
+    // A link to a good scene is read as the scene.
+    fs::create_symlink(folder.write("good.json", "{}"), folder.path / "link.json");
+    CHECK(refusal(folder.path / "link.json").empty());
+}
+
+TEST_CASE("scene_file: a file longer than a scene may be is refused, its length stated") {
+    ScratchFolder folder("too_long");
+    // Spaces are valid JSON around {}: only the length is wrong.
+    const fs::path file = folder.write("big.json", "{}" + std::string(browser::kMaxSceneBytes - 1, ' '));
+    CHECK(refusal(file) == file.string() + ": cannot read: longer than 2097152 bytes, the most a scene file may hold");
+    const fs::path just = folder.write("just.json", "{}" + std::string(browser::kMaxSceneBytes - 2, ' '));
+    CHECK(refusal(just).empty());
+}
+
+TEST_CASE("scene_file: nesting deeper than a scene can use is refused at the first level too many") {
+    ScratchFolder folder("deep");
+    // Deep enough to overflow the stack of any reader that recurses (issue 15: 100,000).
+    const std::size_t depth = 100'000;
+    const fs::path file =
+        folder.write("deep.json", R"({"world": {"gravity": )" + std::string(depth, '[') + std::string(depth, ']') + "}}");
+    CHECK(refusal(file) == file.string() + R"(: world.gravity[0][0]: nested deeper than a scene can use (4 levels: )"
+                                           R"({"bodies": [{"center": [x, y]}]}))");
+    // Four levels, as deep as a scene goes, are read (and refused for what they hold).
+    const fs::path four = folder.write("four.json", R"({"world": {"gravity": [[1], 2]}})");
+    CHECK(refusal(four) == four.string() + ": world.gravity[0]: must be a finite number (got [1])");
+}
+
+TEST_CASE("scene_file: more bodies than a run can afford are refused") {
+    ScratchFolder folder("many");
+    std::string text = R"({"bodies": [)";
+    for (std::size_t i = 0; i <= browser::kMaxBodies; ++i) {
+        text.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [0, 0], "radius": 1})");
+    }
+    const fs::path file = folder.write("many.json", text + "]}");
+    CHECK(refusal(file) == file.string() + ": bodies: more than 2500 bodies (got 2501); every step tests every pair of them");
+}
+
+TEST_CASE("scene_file: text that is not UTF-8, or holds control characters, is escaped in the one line") {
+    ScratchFolder folder("escaped");
+    const fs::path bytes = folder.write("bytes.json", "{\"bodies\": [{\"shape\": \"circ\\u001b\xff\"}]}");
+    const std::string message = refusal(bytes);
+    CHECK(message.find('\xff') == std::string::npos);
+    CHECK(message.find("\\xff") != std::string::npos);
+    // A file name with a line break and an escape sequence in it.
+    const fs::path strange = folder.write("a\nb\x1b[31m.json", R"({"world": {"dt": 0}})");
+    CHECK(refusal(strange) == folder.path.string() + R"(/a\nb\x1b[31m.json: world.dt: must be a number in [1e-5, 1] (got 0))");
 }
 
 TEST_CASE("scene_file: the file name appears as it was given") {

@@ -13,6 +13,9 @@
 #include <unistd.h>
 #include <vector>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
 #include "state_dump.h"
 #include "scratch_folder.h"
 
@@ -119,7 +122,7 @@ TEST_CASE("state_dump: the rows go to a partial file, renamed only by finish()")
     const fs::path file = folder.path / "dump.csv";
     StateDump dump(file);
     dump.row(0, 0, "circle", {1, 2}, 0, {0, 0}, 0);
-    CHECK(folder.files() == std::vector<std::string>{"dump.csv.partial"});
+    CHECK(folder.files() == std::vector<std::string>{"dump.csv.partial-" + std::to_string(::getpid())});
     dump.finish();
     CHECK(folder.files() == std::vector<std::string>{"dump.csv"});
     CHECK(lines_of(file).size() == 2);
@@ -167,4 +170,83 @@ TEST_CASE("state_dump: a shape name other than rectangle or circle is refused") 
     StateDump dump(folder.path / "dump.csv");
     CHECK_THROWS_AS(dump.row(0, 0, "triangle", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
     CHECK_THROWS_AS(dump.row(0, 0, "circle,1", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
+}
+
+namespace {
+
+// The one-line OutputRefused a StateDump to `file` gives ("" when it is made).
+std::string refusal_of(const fs::path& file, const fs::path& out = {}) {
+    try {
+        StateDump dump(file, out);
+    } catch (const browser::OutputRefused& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("state_dump: only a regular file is replaced; a link, a FIFO, a device or a folder is refused") {
+    ScratchFolder folder("not_regular");
+    const std::string rule = "; --dump writes only a regular file, new or one it replaces";
+    // A symbolic link, even to a regular file: the file it points to stays as it is.
+    const fs::path target = folder.path / "target.csv";
+    std::ofstream(target) << "someone's data\n";
+    fs::create_symlink(target, folder.path / "link.csv");
+    CHECK(refusal_of(folder.path / "link.csv") ==
+          "cannot write state dump " + (folder.path / "link.csv").string() + ": it is a symbolic link" + rule);
+    CHECK(lines_of(target) == std::vector<std::string>{"someone's data"});
+    // A FIFO (a reader waiting at the other end would get a dump it never asked for).
+    const fs::path fifo = folder.path / "fifo";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK(refusal_of(fifo) == "cannot write state dump " + fifo.string() + ": it is a FIFO" + rule);
+    // A device: only ever named here, never one a failing test could replace.
+    CHECK(refusal_of("/dev/null") == "cannot write state dump /dev/null: it is a device" + rule);
+    CHECK(fs::is_character_file("/dev/null"));
+    // A device node of our own, where the system lets us make one.
+    const fs::path node = folder.path / "null";
+    if (::mknod(node.c_str(), S_IFCHR | 0600, makedev(1, 3)) == 0) {
+        CHECK(refusal_of(node) == "cannot write state dump " + node.string() + ": it is a device" + rule);
+        CHECK(fs::is_character_file(node));
+    }
+    CHECK(refusal_of(folder.path) == "cannot write state dump " + folder.path.string() + ": it is a folder" + rule);
+    std::vector<std::string> expected{"fifo", "link.csv", "target.csv"};
+    if (fs::exists(fs::symlink_status(node))) expected.insert(expected.begin() + 2, "null");
+    CHECK(folder.files() == expected);  // no partial file of any of them
+}
+
+TEST_CASE("state_dump: a dump inside the --out folder waits beside it and moves in after the run") {
+    ScratchFolder folder("inside_out");
+    const fs::path out = folder.path / "out";
+    fs::create_directories(out);
+    std::ofstream(out / "final.png") << "an older run's picture";
+    StateDump dump(out / "dump.csv", out);
+    dump.row(0, 0, "circle", {1, 2}, 0, {0, 0}, 0);
+    // The run replaces the folder as a whole: the dump must not be inside the old one.
+    CHECK(folder.files() == std::vector<std::string>{"out", "out.dump-partial-" + std::to_string(::getpid())});
+    fs::remove_all(out);
+    fs::create_directories(out);  // the run's new folder
+    dump.finish();
+    CHECK(folder.files() == std::vector<std::string>{"out"});
+    CHECK(lines_of(out / "dump.csv").size() == 2);
+    // The folder itself is no file for a dump.
+    CHECK(refusal_of(out, out) == "cannot write state dump " + out.string() + ": it is the --out folder");
+}
+
+TEST_CASE("state_dump: partial files of dumps whose process is gone are removed; others stay") {
+    ScratchFolder folder("stale");
+    const std::string gone = "4194305";  // one past the largest process id the kernel hands out
+    std::ofstream(folder.path / ("dump.csv.partial-" + gone)) << "x";
+    std::ofstream(folder.path / "dump.csv.partial-1") << "x";  // init's: alive
+    std::ofstream(folder.path / "other.csv.partial-4194305") << "x";
+    StateDump dump(folder.path / "dump.csv");
+    dump.finish();
+    CHECK(folder.files() == std::vector<std::string>{"dump.csv", "dump.csv.partial-1", "other.csv.partial-4194305"});
+}
+
+TEST_CASE("state_dump: a non-finite state names the step, the body and its shape in one line") {
+    const browser::NonFiniteState error(12, 3, "circle");
+    CHECK(std::string(error.what()) ==
+          "step 12: body 3 (circle) has a position or velocity that is not a finite number; the scene is beyond what "
+          "this engine can compute, and nothing was written");
 }

@@ -4,6 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <fstream>
+#include <limits>
+#include <thread>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -17,6 +23,11 @@
 #include "stage_program.h"
 #include "world_fixture.h"
 #include "book_scene.h"
+#include "circle.h"
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 using engine::Vec2;
@@ -319,4 +330,228 @@ TEST_CASE("scene files: a dump that cannot be written stops the run before any p
     CHECK(run.status == 1);
     CHECK(run.error_text.find("dump.csv") != std::string::npos);
     CHECK_FALSE(fs::exists(folder.path / "out"));
+}
+
+// ---------------------------------------------------------------------------------------
+// Hostile input (issue 15): each way in which a careless or hostile command line once
+// crashed, hung, ran without end, printed several lines or replaced a file that was not
+// the run's. Every one is now refused with exit status 2 and one line, nothing written.
+
+namespace {
+
+bool isOneLine(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
+
+// A refused run: status 2, one line that mentions `says`, and nothing new in `folder`
+// beyond what was there (`before`) and the captured output.
+void checkRefused(const test::ScratchFolder& folder, const std::string& command, const std::string& says) {
+    std::vector<std::string> before = folder.files();
+    for (const char* output : {"stdout.txt", "stderr.txt"}) {
+        if (std::find(before.begin(), before.end(), output) == before.end()) before.push_back(output);
+    }
+    std::sort(before.begin(), before.end());
+    const test::ProgramRun run = test::runStageProgram(folder, command);
+    INFO(command << "\n" << run.error_text);
+    CHECK(run.status == 2);
+    CHECK(isOneLine(run.error_text));
+    CHECK_THAT(run.error_text, Catch::Contains(says));
+    CHECK(folder.files() == before);
+}
+
+std::string outIn(const test::ScratchFolder& folder) { return " --out " + test::quoted(folder.path / "out"); }
+
+}  // namespace
+
+TEST_CASE("hostile input: a scene nested 100,000 deep is refused in one line, without a crash") {
+    const test::ScratchFolder folder("hostile-deep");
+    const std::size_t depth = 100'000;
+    folder.write("deep.json", R"({"world": {"gravity": )" + std::string(depth, '[') + std::string(depth, ']') + "}}");
+    checkRefused(folder, "--frames 5 --scene " + test::quoted(folder.path / "deep.json") + outIn(folder),
+                 "world.gravity[0][0]: nested deeper than a scene can use");
+}
+
+TEST_CASE("hostile input: a scene that is a FIFO, a device, a folder or a loop of links is refused at once") {
+    const test::ScratchFolder folder("hostile-scene");
+    REQUIRE(::mkfifo((folder.path / "fifo").c_str(), 0600) == 0);  // no writer: a plain open would wait for ever
+    fs::create_symlink(folder.path / "loop2", folder.path / "loop1");
+    fs::create_symlink(folder.path / "loop1", folder.path / "loop2");
+    const auto scene = [&](const std::string& file) { return "--frames 1 --scene " + file + outIn(folder); };
+    checkRefused(folder, scene(test::quoted(folder.path / "fifo")), "fifo: cannot read: it is a FIFO, not a regular file");
+    checkRefused(folder, scene("/dev/zero"), "/dev/zero: cannot read: it is a device, not a regular file");
+    checkRefused(folder, scene("/dev/urandom"), "/dev/urandom: cannot read: it is a device, not a regular file");
+    checkRefused(folder, scene(test::quoted(folder.path)), "cannot read: it is a folder");
+    checkRefused(folder, scene(test::quoted(folder.path / "loop1")), "loop1: cannot read: a loop of symbolic links");
+    checkRefused(folder, scene("''"), "--scene: must name a file (got \"\")");
+}
+
+TEST_CASE("hostile input: a scene whose numbers would make a NaN is refused when it loads") {
+    // Each once gave a dump of NaN from step 1: a radius whose inertia underflows to 0,
+    // circles meeting at 1e308 px/s, a circle of radius 1e300 onto a rectangle.
+    struct Case { const char* bodies; const char* says; };
+    const Case cases[] = {
+        {R"({"shape": "circle", "center": [100, 100], "radius": 1e-155},
+            {"shape": "circle", "center": [100, 100], "radius": 10})",
+         "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e-155)"},
+        {R"({"shape": "circle", "center": [100, 100], "radius": 10, "velocity": [1e308, 0]},
+            {"shape": "circle", "center": [130, 100], "radius": 10, "velocity": [-1e308, 0]})",
+         "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got 1e+308)"},
+        {R"({"shape": "circle", "center": [100, 100], "radius": 1e300},
+            {"shape": "rectangle", "center": [100, 300], "width": 100, "height": 10, "mass": 0})",
+         "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e+300)"},
+    };
+    for (const Case& bad : cases) {
+        const test::ScratchFolder folder("hostile-nan");
+        folder.write("scene.json", std::string(R"({"bodies": [)") + bad.bodies + "]}");
+        checkRefused(folder, arguments(folder, "scene.json", "--frames 3"), bad.says);
+    }
+}
+
+TEST_CASE("hostile input: --dump replaces only a regular file, never a link, a FIFO or a device") {
+    const test::ScratchFolder folder("hostile-dump");
+    std::ofstream(folder.path / "data.csv") << "someone's data\n";
+    fs::create_symlink(folder.path / "data.csv", folder.path / "link.csv");
+    REQUIRE(::mkfifo((folder.path / "fifo").c_str(), 0600) == 0);
+    const auto dump = [&](const std::string& file) { return "--frames 3 --keys '' --dump " + file + outIn(folder); };
+    const std::string rule = "--dump writes only a regular file, new or one it replaces";
+    checkRefused(folder, dump(test::quoted(folder.path / "link.csv")), "it is a symbolic link; " + rule);
+    CHECK(test::readText(folder.path / "data.csv") == "someone's data\n");
+    checkRefused(folder, dump(test::quoted(folder.path / "fifo")), "it is a FIFO; " + rule);
+    // Only ever named to be refused: a test that failed must not replace /dev/null.
+    checkRefused(folder, dump("/dev/null"), "/dev/null: it is a device; " + rule);
+    CHECK(fs::is_character_file("/dev/null"));
+    // A device node of the test's own, where the system lets a test make one (root).
+    if (::mknod((folder.path / "null").c_str(), S_IFCHR | 0600, makedev(1, 3)) == 0) {
+        checkRefused(folder, dump(test::quoted(folder.path / "null")), "it is a device; " + rule);
+        CHECK(fs::is_character_file(folder.path / "null"));
+    }
+    checkRefused(folder, dump("''"), "--dump: must name a file (got \"\")");
+}
+
+TEST_CASE("hostile input: --dump inside the --out folder is written there, run after run") {
+    const test::ScratchFolder folder("hostile-dump-in-out");
+    const std::string command = "--frames 2 --every 0 --no-gif --keys '' --dump " +
+                                test::quoted(folder.path / "out" / "dump.csv") + outIn(folder);
+    for (int run_number = 1; run_number <= 2; ++run_number) {  // the second replaces the first's folder
+        INFO("run " << run_number);
+        const test::ProgramRun run = test::runStageProgram(folder, command);
+        INFO(run.error_text);
+        CHECK(run.status == 0);
+        CHECK(run.error_text.empty());
+        CHECK(test::readDump(folder.path / "out" / "dump.csv").size() >= 2);
+        CHECK(fs::exists(folder.path / "out" / "final.png"));
+        CHECK(folder.files() == std::vector<std::string>{"out", "stderr.txt", "stdout.txt"});
+    }
+}
+
+TEST_CASE("hostile input: every run is bounded: shapes, presses, pictures and the work of the whole run") {
+    const test::ScratchFolder folder("hostile-bounds");
+    std::string many = R"({"bodies": [)";
+    for (int i = 0; i <= 2500; ++i) many.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [400, 200], "radius": 5})");
+    folder.write("many.json", many + "]}");
+    checkRefused(folder, arguments(folder, "many.json", "--frames 1"), "bodies: more than 2500 bodies (got 2501)");
+    checkRefused(folder, "--frames 1 --keys 'f*2000 g'" + outIn(folder), "more than 2000 keys in all");
+    checkRefused(folder, "--frames 10000000 --every 1" + outIn(folder), "--every: 10000000 frames would save");
+    // 2,000 shapes made at one point: 3,000 frames may cost 6e9 pair tests with one
+    // pass a step (4.1), 9e10 with the book's 15.
+    checkRefused(folder, "--frames 3000 --every 0 --no-gif --keys 'f*2000'" + outIn(folder),
+                 "the run is too long: 3000 frames");
+    checkRefused(folder, "--frames 10000000 --every 0 --no-gif --keys ''" + outIn(folder), "the run is too long: 10000000 frames");
+}
+
+TEST_CASE("hostile input: what the reader typed is quoted escaped, so every refusal is one line") {
+    const test::ScratchFolder folder("hostile-lines");
+    // printf makes the line break: the shell that runs the program (dash) has no $'\n'.
+    checkRefused(folder, R"x(--frames "$(printf '1\n2')")x" + outIn(folder),
+                 R"(--frames: must be a whole number from 1 to 10000000 (got "1\n2"))");
+    checkRefused(folder, R"x(--seed "$(printf '7\r')")x" + outIn(folder), R"((got "7\r"))");
+    checkRefused(folder, R"x("$(printf -- '--bo\ngus')")x" + outIn(folder), R"(unknown option "--bo\ngus")");
+    folder.write("bad.json", "{\"bodies\": [{\"shape\": \"circ\xff\x1b[31m\"}]}");
+    checkRefused(folder, arguments(folder, "bad.json", "--frames 1"), "malformed JSON");
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "bad.json", "--frames 1"));
+    CHECK(run.error_text.find('\x1b') == std::string::npos);
+    CHECK(run.error_text.find('\xff') == std::string::npos);
+}
+
+TEST_CASE("hostile input: --out problems are refusals too: status 2, one line") {
+    const test::ScratchFolder folder("hostile-out");
+    fs::create_directories(folder.path / "thesis");
+    std::ofstream(folder.path / "thesis" / "chapter1.txt") << "years of work\n";
+    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "thesis"), "it is a folder that a run did not write");
+    std::ofstream(folder.path / "file") << "x";
+    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file"), "it exists and is not a folder");
+    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file" / "out"), "cannot write pictures to");
+}
+
+TEST_CASE("hostile input: SIGINT and SIGTERM end a run with no staging folder or partial dump left") {
+    for (const int signal : {SIGINT, SIGTERM}) {
+        INFO("signal " << signal);
+        const test::ScratchFolder folder("hostile-signal");
+        // A long run (about a minute): stopped as soon as its staging folder shows.
+        const pid_t pid = test::startStageProgram(folder, "--frames 100000 --every 0 --no-gif --keys '' --dump " +
+                                                              test::quoted(folder.path / "dump.csv") + outIn(folder));
+        REQUIRE(pid > 0);
+        const fs::path staging = folder.path / ("out.partial-" + std::to_string(pid));
+        for (int wait = 0; wait < 1000 && !fs::exists(staging); ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        CHECK(fs::exists(staging));
+        CHECK(fs::exists(folder.path / ("dump.csv.partial-" + std::to_string(pid))));
+        ::kill(pid, signal);
+        int status = 0;
+        REQUIRE(::waitpid(pid, &status, 0) == pid);
+        // Ended by the signal itself, as an interrupted program should be (a shell shows 128 + it).
+        CHECK(WIFSIGNALED(status));
+        CHECK((WIFSIGNALED(status) ? WTERMSIG(status) : -1) == signal);
+        CHECK(folder.files() == std::vector<std::string>{"stderr.txt", "stdout.txt"});
+    }
+}
+
+TEST_CASE("hostile input: leftovers of a run that was killed outright are removed by the next run") {
+    const test::ScratchFolder folder("hostile-stale");
+    const std::string gone = "4194305";  // one past the largest process id Linux hands out: no process
+    fs::create_directories(folder.path / ("out.partial-" + gone));
+    std::ofstream(folder.path / ("dump.csv.partial-" + gone)) << "half a dump";
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "", "--frames 1 --every 0 --no-gif"));
+    INFO(run.error_text);
+    CHECK(run.status == 0);
+    CHECK(folder.files() == std::vector<std::string>{"dump.csv", "out", "stderr.txt", "stdout.txt"});
+}
+
+TEST_CASE("hostile input: a step that leaves a number no double can be is named, body and step") {
+    test::WorldFixture page(engine::kBookWorld);
+    engine::RigidShape& ball = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
+    page.core.add(engine::Rectangle({100, 300}, 200, 20, {.mass = 0}));
+    CHECK_NOTHROW(engine::checkFinite(page.core));
+    ball.setVelocity({std::numeric_limits<double>::quiet_NaN(), 0});
+    page.steps(1);
+    try {
+        engine::checkFinite(page.core);
+        FAIL("checkFinite let a NaN through");
+    } catch (const browser::NonFiniteState& error) {
+        CHECK(std::string(error.what()).rfind("step 1: body 0 (circle) has a position or velocity that is not a finite number", 0) == 0);
+    }
+}
+
+TEST_CASE("hostile input: at every corner of the ranges a moving body's inverse mass and inertia are finite and > 0") {
+    // The ranges of docs/scene_format.md: masses [1e-3, 1e6], sizes [0.01, 1e5] px. The
+    // extreme inertias are m r^2 / 2 = 5e-8 and m (w^2 + h^2) / 12 = 1.7e15 or so.
+    std::vector<browser::BodyDescription> bodies;
+    for (const double mass : {1e-3, 1e6}) {
+        for (const double size : {0.01, 1e5}) {
+            bodies.push_back({.shape = browser::ShapeKind::circle, .radius = size, .mass = mass});
+            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = size, .height = size, .mass = mass});
+            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = 0.01, .height = 1e5, .mass = mass});
+        }
+    }
+    test::WorldFixture page(engine::kBookWorld);
+    engine::buildScene(page.core, bodies);
+    REQUIRE(page.core.objectCount() == bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        INFO("body " << i);
+        const engine::RigidShape& shape = page.core.object(i);
+        CHECK(std::isfinite(shape.invMass()));
+        CHECK(shape.invMass() > 0);
+        CHECK(std::isfinite(shape.invInertia()));
+        CHECK(shape.invInertia() > 0);
+        CHECK(std::isfinite(1 / shape.invInertia()));  // the inertia itself
+    }
 }

@@ -21,6 +21,7 @@
 #include "rectangle.h"
 #include "scene_file.h"
 #include "scene_io.h"
+#include "stage_program.h"
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
@@ -537,4 +538,23 @@ TEST_CASE("extremes: the edges of what may be simulated are accepted, and simula
     CHECK(far_out.center().x == -1e9);
     CHECK_THAT(far_out.center().y, test::near(1e9 + kG * dt * dt * n * (n + 1) / 2, 1e-5));
     CHECK(far_out.angle() == 0);
+}
+
+TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as a run without end (issue 15)") {
+    // One frame of 1000/60 ms is 1,667 steps of 1e-5 s, each 1000 sub-steps of 1000
+    // passes: 1.7e9 passes over the pairs of even a few shapes, for every frame.
+    const test::ScratchFolder folder("knobs-budget");
+    folder.write("scene.json", R"({"world": {"substeps": 1000, "relaxation_iterations": 1000, "dt": 1e-5},
+        "bodies": [{"shape": "circle", "center": [100, 100], "radius": 10},
+                   {"shape": "circle", "center": [130, 100], "radius": 10},
+                   {"shape": "circle", "center": [160, 100], "radius": 10}]})");
+    const test::ProgramRun run = test::runStageProgram(
+        folder, "--frames 1 --keys '' --scene " + test::quoted(folder.path / "scene.json") + " --out " +
+                    test::quoted(folder.path / "out"));
+    CHECK(run.status == 2);
+    // 1,667 steps x 1000 sub-steps x (1000 x 3 pairs + 3 moves) = 5.006e9 pair tests.
+    CHECK(run.error_text ==
+          "the run is too long: 1 frame of up to 3 shapes may cost 5.01e+09 pair tests, more than the 5e+09 a run may "
+          "(fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)\n");
+    CHECK(folder.files() == std::vector<std::string>{"scene.json", "stderr.txt", "stdout.txt"});
 }

@@ -13,7 +13,10 @@
 #include <string>
 #include <vector>
 
+#include <csignal>
+
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "scratch_folder.h"
 
@@ -47,6 +50,24 @@ inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string
     if (raw != -1 && WIFEXITED(raw)) run.status = WEXITSTATUS(raw);
     run.error_text = readText(err);
     return run;
+}
+
+// The program started in the background, as runStageProgram runs it; its process id.
+// Exec'd by the shell, so the id is the program's own and a signal reaches it.
+inline pid_t startStageProgram(const ScratchFolder& folder, const std::string& arguments) {
+    const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
+    std::string command = "exec ";
+    command.append(quoted(STAGE_PROGRAM)).append(" ").append(arguments);
+    command.append(" >").append(quoted(out)).append(" 2>").append(quoted(err));
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        // The signals a test sends must reach the program, whatever the test runner ignores.
+        ::signal(SIGINT, SIG_DFL);
+        ::signal(SIGTERM, SIG_DFL);
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    return pid;
 }
 
 // One line of a state dump: step,index,shape,cx,cy,angle,vx,vy,angular_velocity.
