@@ -35,6 +35,14 @@ double effectiveMass(double inv_mass_sum, double inv_inertia_a, double inv_inert
     return response > 0 ? 1.0 / response : 0.0;
 }
 
+// What gravity adds to a moving shape's velocity in this step (its own step, after
+// the collisions); nothing while the world's movement is off.
+Vec2 gravityThisStep(const WorldSettings& world) { return world.movement ? world.gravity * world.dt : Vec2{}; }
+
+// The share of k11 k22 that the determinant of a pair's 2 x 2 system must exceed for
+// the two points to be solved together (1 - cos^2 of the angle between their rows).
+constexpr double kWellConditioned = 1e-3;
+
 }  // namespace
 
 std::size_t ContactSolver::pointCount() const {
@@ -47,13 +55,23 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, const WorldS
     findContacts(shapes, broad_phase, world, found);
     prepare(shapes, world);
     if (world.warm_starting) warmStart();
-    solveVelocities(world);
-    if (world.positional_correction && world.position_method == PositionMethod::split_impulse) {
-        solvePositions(shapes, world);
+    switch (world.position_method) {
+        case PositionMethod::baumgarte:
+            solveVelocities(world.velocity_iterations, true);
+            break;
+        case PositionMethod::relax:
+            solveVelocities(world.velocity_iterations, true);
+            relaxAndMove(shapes, world);
+            break;
+        case PositionMethod::split_impulse:
+            solveVelocities(world.velocity_iterations, false);
+            solvePositions(shapes, world);
+            break;
     }
+    // The shapes' own step adds this step's gravity again (see prepare).
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         if (shapes[i]->isStatic()) continue;
-        shapes[i]->setVelocity(bodies_[i].velocity.linear);
+        shapes[i]->setVelocity(bodies_[i].velocity.linear - gravityThisStep(world));
         shapes[i]->setAngularVelocity(bodies_[i].velocity.angular);
     }
 }
@@ -111,7 +129,13 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
     bodies_.resize(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const RigidShape& shape = *shapes[i];
-        bodies_[i] = SolverBody{.velocity = {shape.velocity(), shape.angularVelocity()},
+        // The book's order runs the collisions first and then each shape's step, which
+        // adds gravity's g dt and moves with the new velocity. The velocities to get
+        // right are the ones the shapes will move with, so the solver works on them:
+        // were it to stop a resting box and let gravity add g dt afterwards, the box
+        // would move g dt^2 into the floor, and down a slope, every step.
+        const Vec2 gravity = shape.isStatic() ? Vec2{} : gravityThisStep(world);
+        bodies_[i] = SolverBody{.velocity = {shape.velocity() + gravity, shape.angularVelocity()},
                                 .pseudo = {},
                                 .inv_mass = shape.invMass(),
                                 .inv_inertia = world.rotation ? shape.invInertia() : 0.0};
@@ -134,18 +158,30 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
             // approach gravity adds in one step (g dt, a third of a px/s here) would
             // otherwise bounce back each step, and nothing would ever rest.
             const double approach = speedAlong(a.velocity, b.velocity, point.arm_a, point.arm_b, contact.normal);
-            point.target_speed = approach < -world.restitution_threshold ? -contact.restitution * approach : 0.0;
+            point.bounce_speed = approach < -world.restitution_threshold ? -contact.restitution * approach : 0.0;
 
             // The overlap past the slop, to be removed at position_rate of it per step:
             // as a speed that lasts one step, it is rate * excess / dt.
             const double excess = std::max(point.contact.depth - world.slop, 0.0);
-            const double removal_speed = world.positional_correction ? world.position_rate * excess / world.dt : 0.0;
-            if (world.position_method == PositionMethod::baumgarte) {
-                point.target_speed = std::max(point.target_speed, removal_speed);
-            } else {
-                point.split_speed = removal_speed;
-            }
+            point.removal_speed = world.positional_correction ? world.position_rate * excess / world.dt : 0.0;
         }
+        contact.solve_as_pair = false;
+        if (contact.points.size() != 2) continue;
+        // An impulse at point 1 moves point 2 too, through the shapes' motion and turning:
+        // k12 = 1/mA + 1/mB + (rA1 x n)(rA2 x n)/IA + (rB1 x n)(rB2 x n)/IB.
+        const Point& one = contact.points[0];
+        const Point& two = contact.points[1];
+        const double k12 = inv_mass_sum +
+                           one.arm_a.cross(contact.normal) * two.arm_a.cross(contact.normal) * a.inv_inertia +
+                           one.arm_b.cross(contact.normal) * two.arm_b.cross(contact.normal) * b.inv_inertia;
+        contact.k11 = one.normal_mass > 0 ? 1.0 / one.normal_mass : 0.0;
+        contact.k22 = two.normal_mass > 0 ? 1.0 / two.normal_mass : 0.0;
+        contact.k12 = k12;
+        // Two points close together push almost alike (k12 near k11 and k22): the
+        // system is nearly singular and its answer would swing wildly, so such a pair
+        // is solved point by point.
+        const double determinant = contact.k11 * contact.k22 - k12 * k12;
+        contact.solve_as_pair = determinant > kWellConditioned * contact.k11 * contact.k22;
     }
 }
 
@@ -162,8 +198,13 @@ void ContactSolver::warmStart() {
 // Gauss-Seidel over the contact points: each point in turn gets the impulse that puts
 // its own speed right, as the others' impulses have left it; repeated, the impulses
 // settle on values that suit all the points together.
-void ContactSolver::solveVelocities(const WorldSettings& world) {
-    for (int iteration = 0; iteration < world.velocity_iterations; ++iteration) {
+void ContactSolver::solveVelocities(int iterations, bool with_removal) {
+    for (Contact& contact : contacts_) {
+        for (Point& point : contact.points) {
+            point.target_speed = with_removal ? std::max(point.bounce_speed, point.removal_speed) : point.bounce_speed;
+        }
+    }
+    for (int iteration = 0; iteration < iterations; ++iteration) {
         for (Contact& contact : contacts_) {
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];
@@ -177,6 +218,10 @@ void ContactSolver::solveVelocities(const WorldSettings& world) {
                      &SolverBody::velocity);
                 point.tangent_impulse = total;
             }
+            if (contact.solve_as_pair) {
+                solvePair(contact);
+                continue;
+            }
             for (Point& point : contact.points) {
                 const double speed = speedAlong(a.velocity, b.velocity, point.arm_a, point.arm_b, contact.normal);
                 const double total = std::max(point.normal_impulse + point.normal_mass * (point.target_speed - speed), 0.0);
@@ -185,6 +230,68 @@ void ContactSolver::solveVelocities(const WorldSettings& world) {
                 point.normal_impulse = total;
             }
         }
+    }
+}
+
+// The two normal totals x1, x2 of a flat contact at once. Solved point by point, each
+// point's impulse also moves the other (k12), so the two take turns correcting each
+// other and need many iterations to agree. Together they must satisfy, with the
+// speeds w that the totals x leave (w = K x + b, where b is what the speeds would be
+// with no normal impulse at all, less the target speeds):
+//     x >= 0,  w >= 0,  and x_i w_i = 0   (a point pushes only where it touches)
+// With two unknowns there are four cases to try: both push (w = 0, x = -K^-1 b), only
+// the first (x2 = 0, w1 = 0), only the second, neither (x = 0). The first case that
+// satisfies all three conditions is the answer; if rounding leaves none, the totals
+// stay as they are for this iteration.
+void ContactSolver::solvePair(Contact& contact) {
+    SolverBody& a = bodies_[contact.a];
+    SolverBody& b = bodies_[contact.b];
+    Point& one = contact.points[0];
+    Point& two = contact.points[1];
+    const double x1 = one.normal_impulse;
+    const double x2 = two.normal_impulse;
+    const double b1 = speedAlong(a.velocity, b.velocity, one.arm_a, one.arm_b, contact.normal) - one.target_speed -
+                      (contact.k11 * x1 + contact.k12 * x2);
+    const double b2 = speedAlong(a.velocity, b.velocity, two.arm_a, two.arm_b, contact.normal) - two.target_speed -
+                      (contact.k12 * x1 + contact.k22 * x2);
+    const auto accept = [&](double new1, double new2) {
+        push(a, b, one.arm_a, one.arm_b, contact.normal * (new1 - x1), &SolverBody::velocity);
+        push(a, b, two.arm_a, two.arm_b, contact.normal * (new2 - x2), &SolverBody::velocity);
+        one.normal_impulse = new1;
+        two.normal_impulse = new2;
+    };
+    const double determinant = contact.k11 * contact.k22 - contact.k12 * contact.k12;
+    // Both push: K x = -b by Cramer's rule.
+    const double both1 = (-b1 * contact.k22 + b2 * contact.k12) / determinant;
+    const double both2 = (-b2 * contact.k11 + b1 * contact.k12) / determinant;
+    if (both1 >= 0 && both2 >= 0) return accept(both1, both2);
+    // Only the first pushes: w1 = k11 x1 + b1 = 0, and the second must not approach.
+    const double only1 = -b1 / contact.k11;
+    if (only1 >= 0 && contact.k12 * only1 + b2 >= 0) return accept(only1, 0.0);
+    const double only2 = -b2 / contact.k22;
+    if (only2 >= 0 && contact.k12 * only2 + b1 >= 0) return accept(0.0, only2);
+    if (b1 >= 0 && b2 >= 0) return accept(0.0, 0.0);
+}
+
+// Relaxation after Baumgarte: the iterations so far aimed at the speeds that also
+// remove the overlap; the velocities they left, run for one step, move the shapes
+// apart. Further iterations aim at the bouncing speeds alone, which takes that extra
+// speed back out of the velocities (and out of the totals that warm start the next
+// step). The shapes are moved by the difference, so that overall they move as the
+// first velocities say, but keep the second ones: the overlap is gone, and no energy
+// was added to remove it.
+void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world) {
+    std::vector<Motion> with_removal(bodies_.size());
+    for (std::size_t i = 0; i < bodies_.size(); ++i) with_removal[i] = bodies_[i].velocity;
+    solveVelocities(world.position_iterations, false);
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const SolverBody& body = bodies_[i];
+        if (body.inv_mass == 0.0) continue;
+        const Vec2 extra = with_removal[i].linear - body.velocity.linear;
+        const double extra_turn = with_removal[i].angular - body.velocity.angular;
+        if (extra == Vec2{} && extra_turn == 0.0) continue;
+        shapes[i]->move(extra * world.dt);
+        if (world.rotation) shapes[i]->rotate(extra_turn * world.dt);
     }
 }
 
@@ -199,7 +306,7 @@ void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world)
             SolverBody& b = bodies_[contact.b];
             for (Point& point : contact.points) {
                 const double speed = speedAlong(a.pseudo, b.pseudo, point.arm_a, point.arm_b, contact.normal);
-                const double total = std::max(point.split_impulse + point.normal_mass * (point.split_speed - speed), 0.0);
+                const double total = std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);
                 push(a, b, point.arm_a, point.arm_b, contact.normal * (total - point.split_impulse), &SolverBody::pseudo);
                 point.split_impulse = total;
             }

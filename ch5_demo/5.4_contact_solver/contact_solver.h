@@ -82,8 +82,9 @@ private:
         Vec2 arm_a, arm_b;            // from each shape's centre to the point
         double normal_mass = 0.0;     // 1 / (the normal speed one unit of impulse makes)
         double tangent_mass = 0.0;
-        double target_speed = 0.0;    // the normal speed the velocity iterations aim at
-        double split_speed = 0.0;     // the pseudo speed the split impulses aim at
+        double bounce_speed = 0.0;    // the normal speed restitution asks for
+        double removal_speed = 0.0;   // the normal speed that removes the overlap
+        double target_speed = 0.0;    // the normal speed the iterations aim at now
         double normal_impulse = 0.0;  // totals over the step (kept for the next step)
         double tangent_impulse = 0.0;
         double split_impulse = 0.0;
@@ -96,12 +97,18 @@ private:
         Vec2 tangent;
         double friction, restitution;
         std::vector<Point> points;
+        // Two points are solved together (solvePair) when the coupling of their normal
+        // impulses, k12 below, leaves the 2 x 2 system well conditioned.
+        bool solve_as_pair = false;
+        double k11 = 0.0, k12 = 0.0, k22 = 0.0;  // the speeds unit impulses at 1, 2 make at 1, 2
     };
     void findContacts(ShapeList shapes, BroadPhase& broad_phase, const WorldSettings& world,
                       std::vector<Collision>& found);
     void prepare(ShapeList shapes, const WorldSettings& world);
     void warmStart();
-    void solveVelocities(const WorldSettings& world);
+    void solveVelocities(int iterations, bool with_removal);
+    void relaxAndMove(ShapeList shapes, const WorldSettings& world);
+    void solvePair(Contact& contact);
     void solvePositions(ShapeList shapes, const WorldSettings& world);
 
     std::vector<SolverBody> bodies_;

@@ -64,7 +64,8 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
         {"warm_starting", world.warm_starting},
         {"restitution_threshold", world.restitution_threshold, kSpeedRule},
         {"position_method", world.position_method,
-         {{"split_impulse", PositionMethod::split_impulse}, {"baumgarte", PositionMethod::baumgarte}}},
+         {{"split_impulse", PositionMethod::split_impulse}, {"baumgarte", PositionMethod::baumgarte},
+          {"relax", PositionMethod::relax}}},
         {"position_rate", world.position_rate, rules::kFraction},
         {"slop", world.slop, kSlopRule},
     };

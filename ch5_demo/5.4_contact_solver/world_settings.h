@@ -44,7 +44,7 @@ enum class SolverKind { book, sequential_impulse };
 // How the sequential impulse solver removes overlap (contact_solver.h): pseudo
 // velocities that move the shapes apart and are then forgotten (split impulses), or an
 // extra speed in the velocity target (Baumgarte), which stays in the shapes' velocity.
-enum class PositionMethod { split_impulse, baumgarte };
+enum class PositionMethod { split_impulse, baumgarte, relax };
 
 // The sequential impulse solver's defaults (contact_solver.h says what each does). The
 // canvas is in pixels; at the bench's scale of 30 px to the metre a 0.15 px slop and a
