@@ -263,6 +263,33 @@ TEST_CASE("s5_4: in a free collision the solver's impulses conserve momentum to 
     }
 }
 
+TEST_CASE("s5_4: a contact pushes and never pulls: a shape leaving the floor keeps its speed") {
+    // Still 0.5 px into the floor but moving away at 10 px/s: the impulse that would
+    // stop it would pull, and the total normal impulse may never be below 0. So the
+    // velocity is left exactly as it was (the split impulses move the shape, never its
+    // velocity). A box touches at two points (solved together), a ball at one.
+    test::WorldFixture page(solverWorld(R"(, "gravity": [0, 0])"));
+    page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0}));
+    engine::Rectangle& box = page.core.add(engine::Rectangle({300, 400.5}, 40, 40));
+    engine::Circle& ball = page.core.add(engine::Circle({500, 410.5}, 10));
+    box.setVelocity({0, -10});
+    ball.setVelocity({0, -10});
+    page.steps(1);
+    REQUIRE(page.core.physics().collisions().size() == 2);
+    CHECK(box.velocity() == Vec2{0, -10});
+    CHECK(ball.velocity() == Vec2{0, -10});
+    CHECK(box.angularVelocity() == 0.0);
+
+    // Moving in at 10 px/s, the same two are stopped dead (e = 0.2 of a slow contact
+    // is no bounce), the box on both points without turning.
+    box.setVelocity({0, 10});
+    ball.setVelocity({0, 10});
+    page.steps(1);
+    CHECK_THAT(box.velocity(), test::near(Vec2{0, 0}, 1e-12));
+    CHECK_THAT(ball.velocity(), test::near(Vec2{0, 0}, 1e-12));
+    CHECK_THAT(box.angularVelocity(), test::near(0.0, 1e-12));
+}
+
 TEST_CASE("s5_4: a fast impact bounces at e times its speed; below the threshold nothing bounces") {
     // A ball falls onto the floor, e = 0.5 for both. The solver judges the velocity the
     // ball would move with in the step, v = v_before + g dt (the step's gravity
