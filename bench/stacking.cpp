@@ -127,6 +127,8 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
                   {Knob::substeps, range},       {Knob::integrator},             {Knob::friction_model},
                   {Knob::rotation}};
     if (small) plan.knobs.push_back({Knob::broad_phase});
+    plan.knobs.insert(plan.knobs.end(), {{Knob::solver}, {Knob::velocity_iterations}, {Knob::warm_starting},
+                                         {Knob::position_method}});
     plan.measure = stacking(settle, seconds);
     plan.box2d = true;
     plan.error = {"top box moved (px)", [](const Metrics& m) { return m.top_drift; }, 1e-3};

@@ -51,7 +51,7 @@ ContactPoint middleOfSegment(const CollisionInfo& info, std::uint32_t key) {
 }
 
 // The two rectangles' points (see contact_manifold.h).
-std::vector<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2 normal) {
+UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2 normal) {
     // The separating axis test's normal is one of the faces' normals: a's face looking
     // along it, or b's looking against it. Whichever matches better is the reference.
     const std::size_t face_a = faceFacing(a, normal);
@@ -80,7 +80,7 @@ std::vector<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, 
     // The key: who is the reference, which two faces, which feature of the point.
     const std::uint32_t faces = (b_is_reference ? 1u << 12 : 0u) | static_cast<std::uint32_t>(reference_face) << 8 |
                                 static_cast<std::uint32_t>(incident_face) << 4;
-    std::vector<ContactPoint> points;
+    UpToTwo<ContactPoint> points;
     for (const Tagged& end : segment) {
         // Behind the reference face by `depth`; the point itself goes halfway back to
         // the face, between the two outlines.

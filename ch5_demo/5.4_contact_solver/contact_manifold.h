@@ -23,8 +23,9 @@
 // corner or which side line), so that the solver can recognise the same point in the
 // next step, although the shapes have moved, and start it from its last impulses.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "collision_info.h"
 #include "rigid_shape.h"
@@ -32,14 +33,34 @@
 namespace engine {
 
 struct ContactPoint {
-    Vec2 position;           // halfway between the two outlines
-    double depth;            // > 0: how far the outlines overlap here, along the normal
-    std::uint32_t key;       // the features that made the point (same key, same point)
+    Vec2 position;            // halfway between the two outlines
+    double depth = 0.0;       // > 0: how far the outlines overlap here, along the normal
+    std::uint32_t key = 0;    // the features that made the point (same key, same point)
+};
+
+// At most two of something, kept in place: a step makes one manifold per touching
+// pair, and a list on the heap for each would cost more than the points themselves.
+template <class Item>
+class UpToTwo {
+public:
+    void push_back(const Item& item) { items_.at(count_++) = item; }
+    std::size_t size() const { return count_; }
+    bool empty() const { return count_ == 0; }
+    Item& operator[](std::size_t i) { return items_[i]; }
+    const Item& operator[](std::size_t i) const { return items_[i]; }
+    Item* begin() { return items_.data(); }
+    Item* end() { return items_.data() + count_; }
+    const Item* begin() const { return items_.data(); }
+    const Item* end() const { return items_.data() + count_; }
+
+private:
+    std::array<Item, 2> items_{};
+    std::size_t count_ = 0;
 };
 
 struct ContactManifold {
     Vec2 normal;  // unit, from the first shape towards the second
-    std::vector<ContactPoint> points;
+    UpToTwo<ContactPoint> points;
 };
 
 // The contact points of two shapes whose overlap the narrow phase found (`info`, its

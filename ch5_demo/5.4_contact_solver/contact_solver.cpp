@@ -1,6 +1,7 @@
 #include "contact_solver.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
 #include "physics.h"
@@ -84,7 +85,13 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, cons
     last_.swap(contacts_);
     contacts_.clear();
     last_index_.clear();
-    for (std::size_t k = 0; k < last_.size(); ++k) last_index_[{last_[k].shape_a, last_[k].shape_b}] = k;
+    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].shape_a, last_[k].shape_b}, k});
+    // Pointers compared by std::less: a total order, whatever the addresses.
+    const auto by_pair = [](const auto& x, const auto& y) {
+        return std::less<const RigidShape*>{}(x.first.first, y.first.first) ||
+               (x.first.first == y.first.first && std::less<const RigidShape*>{}(x.first.second, y.first.second));
+    };
+    std::sort(last_index_.begin(), last_index_.end(), by_pair);
     persisted_ = 0;
 
     broad_phase.startStep(shapes);
@@ -105,10 +112,12 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, cons
                         .friction = world.friction ? std::min(a.friction(), b.friction()) : 0.0,
                         .restitution = std::min(a.restitution(), b.restitution()),
                         .points = {}};
-        const auto last = last_index_.find({&a, &b});
+        const std::pair<PairKey, std::size_t> wanted{{&a, &b}, 0};
+        const auto last = std::lower_bound(last_index_.begin(), last_index_.end(), wanted, by_pair);
+        const bool met_before = last != last_index_.end() && last->first == wanted.first;
         for (const ContactPoint& point : manifold.points) {
             Point solved{.contact = point};
-            if (last != last_index_.end()) {
+            if (met_before) {
                 for (const Point& before : last_[last->second].points) {
                     if (before.contact.key != point.key) continue;
                     solved.normal_impulse = before.normal_impulse;

@@ -29,7 +29,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -96,7 +95,7 @@ private:
         Vec2 normal;       // from a towards b
         Vec2 tangent;
         double friction, restitution;
-        std::vector<Point> points;
+        UpToTwo<Point> points;
         // Two points are solved together (solvePair) when the coupling of their normal
         // impulses, k12 below, leaves the 2 x 2 system well conditioned.
         bool solve_as_pair = false;
@@ -113,9 +112,11 @@ private:
 
     std::vector<SolverBody> bodies_;
     std::vector<Contact> contacts_;
-    // The last step's contacts, by their pair of shapes: which contact, in last_.
-    std::map<std::pair<const RigidShape*, const RigidShape*>, std::size_t> last_index_;
+    // The last step's contacts, and an index of them by their pair of shapes, sorted so
+    // that a pair is found by bisection.
+    using PairKey = std::pair<const RigidShape*, const RigidShape*>;
     std::vector<Contact> last_;
+    std::vector<std::pair<PairKey, std::size_t>> last_index_;
     std::size_t persisted_ = 0;
 };
 
