@@ -10,29 +10,28 @@ namespace engine {
 
 namespace {
 
-// An impulse j at the point: b's motion changes by j / m and (r x j) / I, and a's by
-// the same turned round (Newton's third law). `motion` picks the real or the pseudo one.
-void push(SolverBody& a, SolverBody& b, Vec2 arm_a, Vec2 arm_b, Vec2 impulse, Motion SolverBody::*motion) {
-    (a.*motion).linear -= impulse * a.inv_mass;
-    (a.*motion).angular -= arm_a.cross(impulse) * a.inv_inertia;
-    (b.*motion).linear += impulse * b.inv_mass;
-    (b.*motion).angular += arm_b.cross(impulse) * b.inv_inertia;
+// An impulse of `amount` along `direction` at the point: b's motion changes by j / m
+// and (r x j) / I, and a's by the same turned round (Newton's third law). `motion`
+// picks the real or the pseudo one.
+void pushAlong(SolverBody& a, SolverBody& b, Motion SolverBody::*motion, Vec2 direction, Turns turns,
+               double amount) {
+    (a.*motion).linear -= direction * (amount * a.inv_mass);
+    (a.*motion).angular -= turns.a * amount * a.inv_inertia;
+    (b.*motion).linear += direction * (amount * b.inv_mass);
+    (b.*motion).angular += turns.b * amount * b.inv_inertia;
 }
 
 // How fast the point on b moves away from the point on a, along `direction`.
-double speedAlong(const Motion& a, const Motion& b, Vec2 arm_a, Vec2 arm_b, Vec2 direction) {
-    return (b.at(arm_b) - a.at(arm_a)).dot(direction);
+double speedAlong(const Motion& a, const Motion& b, Vec2 direction, Turns turns) {
+    return (b.linear - a.linear).dot(direction) + b.angular * turns.b - a.angular * turns.a;
 }
 
-// 1 / (the change of the pair's relative speed along `direction` that one unit of
+// 1 / (the change of the pair's relative speed along a direction that one unit of
 // impulse at the point makes): 1/m for moving each shape, (r x d)^2 / I for turning it.
 // This "effective mass" turns a wrong speed into the impulse that puts it right:
 // impulse = effective mass * (wanted speed - speed).
-double effectiveMass(double inv_mass_sum, double inv_inertia_a, double inv_inertia_b, Vec2 arm_a, Vec2 arm_b,
-                     Vec2 direction) {
-    const double turn_a = arm_a.cross(direction);
-    const double turn_b = arm_b.cross(direction);
-    const double response = inv_mass_sum + turn_a * turn_a * inv_inertia_a + turn_b * turn_b * inv_inertia_b;
+double effectiveMass(double inv_mass_sum, double inv_inertia_a, double inv_inertia_b, Turns turns) {
+    const double response = inv_mass_sum + turns.a * turns.a * inv_inertia_a + turns.b * turns.b * inv_inertia_b;
     return response > 0 ? 1.0 / response : 0.0;
 }
 
@@ -155,18 +154,18 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
         const double inv_mass_sum = a.inv_mass + b.inv_mass;
         for (Point& point : contact.points) {
             // Without rotation the impulses act as through the centres: zero arms.
-            point.arm_a = world.rotation ? point.contact.position - shapes[contact.a]->center() : Vec2{};
-            point.arm_b = world.rotation ? point.contact.position - shapes[contact.b]->center() : Vec2{};
-            point.normal_mass =
-                effectiveMass(inv_mass_sum, a.inv_inertia, b.inv_inertia, point.arm_a, point.arm_b, contact.normal);
-            point.tangent_mass =
-                effectiveMass(inv_mass_sum, a.inv_inertia, b.inv_inertia, point.arm_a, point.arm_b, contact.tangent);
+            const Vec2 arm_a = world.rotation ? point.contact.position - shapes[contact.a]->center() : Vec2{};
+            const Vec2 arm_b = world.rotation ? point.contact.position - shapes[contact.b]->center() : Vec2{};
+            point.normal_turns = {arm_a.cross(contact.normal), arm_b.cross(contact.normal)};
+            point.tangent_turns = {arm_a.cross(contact.tangent), arm_b.cross(contact.tangent)};
+            point.normal_mass = effectiveMass(inv_mass_sum, a.inv_inertia, b.inv_inertia, point.normal_turns);
+            point.tangent_mass = effectiveMass(inv_mass_sum, a.inv_inertia, b.inv_inertia, point.tangent_turns);
 
             // Newton's law of restitution asks the point to leave at e times the speed
             // it came in with; but only a real impact, faster than the threshold. The
             // approach gravity adds in one step (g dt, a third of a px/s here) would
             // otherwise bounce back each step, and nothing would ever rest.
-            const double approach = speedAlong(a.velocity, b.velocity, point.arm_a, point.arm_b, contact.normal);
+            const double approach = speedAlong(a.velocity, b.velocity, contact.normal, point.normal_turns);
             point.bounce_speed = approach < -world.restitution_threshold ? -contact.restitution * approach : 0.0;
 
             // The overlap past the slop, to be removed at position_rate of it per step:
@@ -180,9 +179,8 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
         // k12 = 1/mA + 1/mB + (rA1 x n)(rA2 x n)/IA + (rB1 x n)(rB2 x n)/IB.
         const Point& one = contact.points[0];
         const Point& two = contact.points[1];
-        const double k12 = inv_mass_sum +
-                           one.arm_a.cross(contact.normal) * two.arm_a.cross(contact.normal) * a.inv_inertia +
-                           one.arm_b.cross(contact.normal) * two.arm_b.cross(contact.normal) * b.inv_inertia;
+        const double k12 = inv_mass_sum + one.normal_turns.a * two.normal_turns.a * a.inv_inertia +
+                           one.normal_turns.b * two.normal_turns.b * b.inv_inertia;
         contact.k11 = one.normal_mass > 0 ? 1.0 / one.normal_mass : 0.0;
         contact.k22 = two.normal_mass > 0 ? 1.0 / two.normal_mass : 0.0;
         contact.k12 = k12;
@@ -198,8 +196,10 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
 void ContactSolver::warmStart() {
     for (Contact& contact : contacts_) {
         for (const Point& point : contact.points) {
-            const Vec2 impulse = contact.normal * point.normal_impulse + contact.tangent * point.tangent_impulse;
-            push(bodies_[contact.a], bodies_[contact.b], point.arm_a, point.arm_b, impulse, &SolverBody::velocity);
+            SolverBody& a = bodies_[contact.a];
+            SolverBody& b = bodies_[contact.b];
+            pushAlong(a, b, &SolverBody::velocity, contact.normal, point.normal_turns, point.normal_impulse);
+            pushAlong(a, b, &SolverBody::velocity, contact.tangent, point.tangent_turns, point.tangent_impulse);
         }
     }
 }
@@ -220,11 +220,11 @@ void ContactSolver::solveVelocities(int iterations, bool with_removal) {
             // Friction first, within the cone of the normal totals as they stand: the
             // normal impulses below, solved last, are then the ones the iteration ends on.
             for (Point& point : contact.points) {
-                const double sliding = speedAlong(a.velocity, b.velocity, point.arm_a, point.arm_b, contact.tangent);
+                const double sliding = speedAlong(a.velocity, b.velocity, contact.tangent, point.tangent_turns);
                 const double limit = contact.friction * point.normal_impulse;
                 const double total = std::clamp(point.tangent_impulse - point.tangent_mass * sliding, -limit, limit);
-                push(a, b, point.arm_a, point.arm_b, contact.tangent * (total - point.tangent_impulse),
-                     &SolverBody::velocity);
+                pushAlong(a, b, &SolverBody::velocity, contact.tangent, point.tangent_turns,
+                          total - point.tangent_impulse);
                 point.tangent_impulse = total;
             }
             if (contact.solve_as_pair) {
@@ -232,10 +232,10 @@ void ContactSolver::solveVelocities(int iterations, bool with_removal) {
                 continue;
             }
             for (Point& point : contact.points) {
-                const double speed = speedAlong(a.velocity, b.velocity, point.arm_a, point.arm_b, contact.normal);
+                const double speed = speedAlong(a.velocity, b.velocity, contact.normal, point.normal_turns);
                 const double total = std::max(point.normal_impulse + point.normal_mass * (point.target_speed - speed), 0.0);
-                push(a, b, point.arm_a, point.arm_b, contact.normal * (total - point.normal_impulse),
-                     &SolverBody::velocity);
+                pushAlong(a, b, &SolverBody::velocity, contact.normal, point.normal_turns,
+                          total - point.normal_impulse);
                 point.normal_impulse = total;
             }
         }
@@ -259,13 +259,13 @@ void ContactSolver::solvePair(Contact& contact) {
     Point& two = contact.points[1];
     const double x1 = one.normal_impulse;
     const double x2 = two.normal_impulse;
-    const double b1 = speedAlong(a.velocity, b.velocity, one.arm_a, one.arm_b, contact.normal) - one.target_speed -
+    const double b1 = speedAlong(a.velocity, b.velocity, contact.normal, one.normal_turns) - one.target_speed -
                       (contact.k11 * x1 + contact.k12 * x2);
-    const double b2 = speedAlong(a.velocity, b.velocity, two.arm_a, two.arm_b, contact.normal) - two.target_speed -
+    const double b2 = speedAlong(a.velocity, b.velocity, contact.normal, two.normal_turns) - two.target_speed -
                       (contact.k12 * x1 + contact.k22 * x2);
     const auto accept = [&](double new1, double new2) {
-        push(a, b, one.arm_a, one.arm_b, contact.normal * (new1 - x1), &SolverBody::velocity);
-        push(a, b, two.arm_a, two.arm_b, contact.normal * (new2 - x2), &SolverBody::velocity);
+        pushAlong(a, b, &SolverBody::velocity, contact.normal, one.normal_turns, new1 - x1);
+        pushAlong(a, b, &SolverBody::velocity, contact.normal, two.normal_turns, new2 - x2);
         one.normal_impulse = new1;
         two.normal_impulse = new2;
     };
@@ -314,9 +314,9 @@ void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world)
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];
             for (Point& point : contact.points) {
-                const double speed = speedAlong(a.pseudo, b.pseudo, point.arm_a, point.arm_b, contact.normal);
+                const double speed = speedAlong(a.pseudo, b.pseudo, contact.normal, point.normal_turns);
                 const double total = std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);
-                push(a, b, point.arm_a, point.arm_b, contact.normal * (total - point.split_impulse), &SolverBody::pseudo);
+                pushAlong(a, b, &SolverBody::pseudo, contact.normal, point.normal_turns, total - point.split_impulse);
                 point.split_impulse = total;
             }
         }

@@ -47,8 +47,14 @@ struct Collision;
 struct Motion {
     Vec2 linear;
     double angular = 0.0;
-    // The velocity of the point at `arm` from the centre: w x r = (-w r.y, w r.x) added.
-    Vec2 at(Vec2 arm) const { return linear + Vec2{-angular * arm.y, angular * arm.x}; }
+};
+
+// The arms r of a contact point crossed with a direction d, r x d, for each shape:
+// how hard an impulse along d at the point turns the shape, and, the other way round,
+// how fast the shape's turning w moves the point along d ((w x r) . d = w (r x d)).
+struct Turns {
+    double a = 0.0;
+    double b = 0.0;
 };
 
 // A shape as the solver sees it over a step: its velocities, worked on in place and
@@ -78,7 +84,8 @@ private:
     // What the solver keeps about one contact point over a step.
     struct Point {
         ContactPoint contact;
-        Vec2 arm_a, arm_b;            // from each shape's centre to the point
+        Turns normal_turns;           // the arms (from each centre to the point) x normal
+        Turns tangent_turns;          // ... x tangent
         double normal_mass = 0.0;     // 1 / (the normal speed one unit of impulse makes)
         double tangent_mass = 0.0;
         double bounce_speed = 0.0;    // the normal speed restitution asks for
