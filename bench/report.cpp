@@ -61,6 +61,7 @@ const std::vector<CsvColumn>& columns() {
         {"velocity_iterations", [](const Row& r) { return whole(r.world.velocity_iterations); }},
         {"warm_starting", [](const Row& r) { return on_off(r.world.warm_starting); }},
         {"position_method", [](const Row& r) { return chosen(r.world.position_method); }},
+        {"restitution_threshold", [](const Row& r) { return number(r.world.restitution_threshold); }},
         {"steps", [](const Row& r) { return std::to_string(r.steps); }},
         {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
         {"cost_us", [](const Row& r) { return number(r.cost_us); }},

@@ -57,6 +57,7 @@ struct WorldDescription {
     std::optional<int> velocity_iterations;     // 5.4
     std::optional<bool> warm_starting;          // 5.4
     std::optional<PositionMethod> position_method;  // 5.4
+    std::optional<double> restitution_threshold;    // 5.4, px/s
 
     friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
 };

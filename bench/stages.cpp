@@ -100,6 +100,7 @@ WorldDescription resolved(Stage stage, const WorldDescription& world) {
     write_default(*adapter, &W::warm_starting, {true, false}, written);
     write_default(*adapter, &W::position_method,
                   {PositionMethod::split_impulse, PositionMethod::baumgarte, PositionMethod::relax}, written);
+    write_default(*adapter, &W::restitution_threshold, {30.0, 0.0}, written);
     return written;
 }
 

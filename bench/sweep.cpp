@@ -65,7 +65,12 @@ std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
             add("friction off", [](W& w) { w.friction = false; });
             break;
         case Knob::solver:
-            add("sequential impulse", [](W& w) { w.solver = Solver::sequential_impulse; });
+            // Where nothing rests (no gravity) every collision should bounce, so the
+            // restitution threshold is 0 there, as for Box2D's row (box2d_world.cpp).
+            add("sequential impulse", [](W& w) {
+                w.solver = Solver::sequential_impulse;
+                if (w.gravity == Vec2{}) w.restitution_threshold = 0.0;
+            });
             break;
         case Knob::velocity_iterations:
             for (int iterations : {2, 4, 8, 16}) {
