@@ -120,7 +120,10 @@ private:
     std::vector<SolverBody> bodies_;
     std::vector<Contact> contacts_;
     // The last step's contacts, and an index of them by their pair of shapes, sorted so
-    // that a pair is found by bisection.
+    // that a pair is found by bisection. Shapes are named by their addresses, which stay
+    // put while they live (the core owns each through a unique_ptr); a shape removed and
+    // a new one made at the same address between two steps could inherit its contact's
+    // impulses for one step, only ever as a first guess that the iterations correct.
     using PairKey = std::pair<const RigidShape*, const RigidShape*>;
     std::vector<Contact> last_;
     std::vector<std::pair<PairKey, std::size_t>> last_index_;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
+#include <optional>
 #include <string>
 
 #include "circle.h"
@@ -445,5 +447,20 @@ TEST_CASE("s5_4: warm starting reaches the same resting state in fewer iteration
     INFO("warm " << warm << ", cold " << cold);
     CHECK(warm <= 2);
     CHECK(cold >= 8 * warm);
+}
+
+TEST_CASE("s5_4: a resting column's contact points are found again, by their keys, step after step") {
+    // 8 boxes, each lying flat on the one below (the lowest on the floor): 8 contacts
+    // of two points each, all of them found again in the next step.
+    test::WorldFixture page(solverWorld());
+    page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0, .friction = 0.6, .restitution = 0}));
+    for (int row = 0; row < 8; ++row) {
+        page.core.add(engine::Rectangle({400, 400 - 40.25 * row}, 40, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
+    }
+    page.steps(2 * kStepsPerSecond);
+    const engine::ContactSolver& solver = page.core.physics().contactSolver();
+    CHECK(page.core.physics().collisions().size() == 8);
+    CHECK(solver.pointCount() == 16);
+    CHECK(solver.persistedPointCount() == 16);
 }
 
