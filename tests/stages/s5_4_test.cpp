@@ -326,19 +326,24 @@ TEST_CASE("s5_4: a fast impact bounces at e times its speed; below the threshold
 
 TEST_CASE("s5_4: a pyramid of 20 rows stands for 60 s") {
     // The bench's pyramid (bench/scenes/pyramid_20.json): 210 boxes. The book's passes
-    // let its top creep 2.5 px in 10 s, whatever their number; here the top must stay
-    // within the bench's figure for the sequential impulse solver (bench/README.md).
+    // let its top sink 2.5 px in 10 s, whatever their number, and on. Here the top
+    // settles within a few seconds (the bench's figure: 0.049 px moved over the 10 s
+    // after the first second, 0.105 px at the most in between) and then rests: over the
+    // next 50 s it moves less than a thousandth of a pixel.
     SceneRun run(solverScene(fs::path(BENCH_SCENES_DIR) / "pyramid_20.json"));
     const std::size_t top = run.page.core.objectCount() - 1;
     run.page.steps(kStepsPerSecond);  // the 0.25 px gaps between rows close
     const Vec2 start = run.page.core.object(top).center();
     double drift = 0.0;
-    for (int second = 0; second < 60; ++second) {
+    Vec2 after_ten_seconds;
+    for (int second = 1; second <= 60; ++second) {
         run.page.steps(kStepsPerSecond);
         drift = std::max(drift, run.page.core.object(top).center().distance(start));
+        if (second == 10) after_ten_seconds = run.page.core.object(top).center();
     }
-    CHECK(drift < 0.5);
-    CHECK(fastest(run.page.core) < 0.5);
+    CHECK(drift < 0.15);
+    CHECK(run.page.core.object(top).center().distance(after_ten_seconds) < 1e-3);
+    CHECK(fastest(run.page.core) < 0.01);
     CHECK_FALSE(test::firstNotFinite(run.page.core));
 }
 
