@@ -23,9 +23,9 @@
 //    shape in each step is not bounced back, and piles come to rest.
 //  - The book removes overlap by moving shapes in relaxation passes, whatever their
 //    masses say about how hard the contact pushes. Here overlap is removed by impulses
-//    too, through the same effective masses (position_method: split impulses or
-//    Baumgarte), and only the part past a small slop, so that resting contacts stay
-//    touching and are found again in the next step.
+//    too, through the same effective masses (position_method: split impulses, the
+//    default; Baumgarte; or Baumgarte relaxed), and only the part past a small slop,
+//    so that resting contacts stay touching and are found again in the next step.
 
 #include <cstddef>
 #include <cstdint>

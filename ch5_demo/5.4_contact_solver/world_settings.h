@@ -42,8 +42,9 @@ enum class FrictionModel { book, coulomb };
 // or the sequential impulse solver of this stage (contact_solver.h).
 enum class SolverKind { book, sequential_impulse };
 // How the sequential impulse solver removes overlap (contact_solver.h): pseudo
-// velocities that move the shapes apart and are then forgotten (split impulses), or an
-// extra speed in the velocity target (Baumgarte), which stays in the shapes' velocity.
+// velocities that move the shapes apart and are then forgotten (split impulses); an
+// extra speed in the velocity target (Baumgarte), which stays in the shapes' velocity;
+// or that extra speed taken back out by further iterations (relax).
 enum class PositionMethod { split_impulse, baumgarte, relax };
 
 // The sequential impulse solver's defaults (contact_solver.h says what each does). The
