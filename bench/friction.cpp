@@ -69,7 +69,7 @@ StudyResult slide_study(const StudyContext& context) {
                     " px; *slide error* is how much further (+) or shorter (-) it went in " + figure(kSlideSeconds) +
                     " s. The book's friction model is not Coulomb's (docs/errata.md, \"Friction\").";
     plan.knobs = {{Knob::friction_model}, {Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps},
-                  {Knob::integrator}, {Knob::rotation}};
+                  {Knob::integrator}, {Knob::rotation}, {Knob::solver}};
     plan.measure = slide_distance();
     plan.error = {"size of the slide error (share of Coulomb's distance)",
                   [](const Metrics& m) { return m.slide_error; }, 1e-4};
@@ -97,7 +97,7 @@ StudyResult slope_study(const StudyContext& context) {
                     "*roll error* is how much further (+) or shorter (-) it ran in " + figure(kRollSeconds) +
                     " s. Without rotation it cannot roll, and friction holds it or lets it slide.";
     plan.knobs = {{Knob::friction_model}, {Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps},
-                  {Knob::integrator}, {Knob::rotation}};
+                  {Knob::integrator}, {Knob::rotation}, {Knob::solver}};
     plan.measure = roll_distance();
     plan.error = {"size of the roll error (share of the exact run)", [](const Metrics& m) { return m.roll_error; },
                   1e-4};

@@ -37,7 +37,8 @@ StudyResult gas_study(const StudyContext& context) {
     // No broad phases: they change only the cost, and 10,000 steps of testing every pair
     // would take most of the bench's time (the scale study compares them). No correction
     // rates either: discs that bounce apart at once leave it nothing to correct.
-    plan.knobs = {{Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps}, {Knob::integrator}, {Knob::rotation}};
+    plan.knobs = {{Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps}, {Knob::integrator}, {Knob::rotation},
+                  {Knob::solver}};
     plan.measure = energy_drift(steps);
     plan.box2d = true;
     plan.error = {"size of the energy change (share of the start)", [](const Metrics& m) { return m.energy_change; },

@@ -57,6 +57,11 @@ const std::vector<CsvColumn>& columns() {
         {"friction_model", [](const Row& r) { return chosen(r.world.friction_model); }},
         {"rotation", [](const Row& r) { return on_off(r.world.rotation); }},
         {"friction", [](const Row& r) { return on_off(r.world.friction); }},
+        {"solver", [](const Row& r) { return chosen(r.world.solver); }},
+        {"velocity_iterations", [](const Row& r) { return whole(r.world.velocity_iterations); }},
+        {"warm_starting", [](const Row& r) { return on_off(r.world.warm_starting); }},
+        {"position_method", [](const Row& r) { return chosen(r.world.position_method); }},
+        {"restitution_threshold", [](const Row& r) { return number(r.world.restitution_threshold); }},
         {"steps", [](const Row& r) { return std::to_string(r.steps); }},
         {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
         {"cost_us", [](const Row& r) { return number(r.cost_us); }},
@@ -109,9 +114,9 @@ std::string results_markdown(const RunFacts& facts, const std::vector<StudyResul
             " cores; each cost is the median of " + std::to_string(facts.repeats) +
             (facts.repeats == 1 ? " timed run" : " timed runs") +
             " per setting, each on a fresh world, errors from the first. Every row names the engine that made it: "
-            "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs) or Box2D; a "
-            "setting runs on the oldest stage that can express it. Everything runs on one core, one "
-            "setting after another. To keep the whole run within a few minutes, each scene runs only as long "
+            "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs), "
+            "5.4 (+ a contact solver) or Box2D; a setting runs on the oldest stage that can express it. "
+            "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each scene runs only as long "
             "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "
             "10,000 steps, and the big scenes try fewer knobs. Costs are wall-clock times on a shared machine: "
             "compare rows of one run, not runs of different days. Definitions and targets: bench/README.md.\n\n";

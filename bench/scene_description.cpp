@@ -17,6 +17,17 @@ std::string_view spelling(Integrator integrator) {
 
 std::string_view spelling(FrictionModel model) { return model == FrictionModel::book ? "book" : "coulomb"; }
 
+std::string_view spelling(Solver solver) { return solver == Solver::book ? "book" : "sequential_impulse"; }
+
+std::string_view spelling(PositionMethod method) {
+    switch (method) {
+        case PositionMethod::split_impulse: return "split_impulse";
+        case PositionMethod::baumgarte: return "baumgarte";
+        case PositionMethod::relax: return "relax";
+    }
+    return "";
+}
+
 int substeps_of(const WorldDescription& world) { return world.substeps.value_or(1); }
 
 }  // namespace bench

@@ -25,10 +25,14 @@ using browser::Vec2;
 enum class BroadPhase { bounding_circle, all_pairs, grid };  // 5.2 on
 enum class Integrator { symplectic, explicit_euler };        // 5.3
 enum class FrictionModel { book, coulomb };                  // 5.3
+enum class Solver { book, sequential_impulse };              // 5.4
+enum class PositionMethod { split_impulse, baumgarte, relax };  // 5.4
 
 std::string_view spelling(BroadPhase phase);
 std::string_view spelling(Integrator integrator);
 std::string_view spelling(FrictionModel model);
+std::string_view spelling(Solver solver);
+std::string_view spelling(PositionMethod method);
 
 struct WorldDescription {
     // The book's keys. No defaults here: the book's values live in the stages, and
@@ -49,6 +53,11 @@ struct WorldDescription {
     std::optional<FrictionModel> friction_model;  // 5.3
     std::optional<bool> rotation;               // 5.3
     std::optional<bool> friction;               // 5.3
+    std::optional<Solver> solver;               // 5.4
+    std::optional<int> velocity_iterations;     // 5.4
+    std::optional<bool> warm_starting;          // 5.4
+    std::optional<PositionMethod> position_method;  // 5.4
+    std::optional<double> restitution_threshold;    // 5.4, px/s
 
     friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
 };

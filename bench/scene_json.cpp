@@ -86,6 +86,11 @@ std::vector<WorldEntry> world_entries(const WorldDescription& w) {
     if (w.friction_model) entries.push_back({"friction_model", word(spelling(*w.friction_model))});
     if (w.rotation) entries.push_back({"rotation", flag(*w.rotation)});
     if (w.friction) entries.push_back({"friction", flag(*w.friction)});
+    if (w.solver) entries.push_back({"solver", word(spelling(*w.solver))});
+    if (w.velocity_iterations) entries.push_back({"velocity_iterations", std::to_string(*w.velocity_iterations)});
+    if (w.warm_starting) entries.push_back({"warm_starting", flag(*w.warm_starting)});
+    if (w.position_method) entries.push_back({"position_method", word(spelling(*w.position_method))});
+    if (w.restitution_threshold) entries.push_back({"restitution_threshold", number(*w.restitution_threshold)});
     return entries;
 }
 

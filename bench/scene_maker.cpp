@@ -174,6 +174,17 @@ SceneDescription slide() {
     return scene;
 }
 
+SceneDescription heavy_on_light(double heavy) {
+    SceneDescription scene;
+    scene.world = world_of(800.0, 450.0);
+    scene.bodies.push_back(fixed_box({400.0, 430.0}, 600.0, 20.0, 0.8, 0.2));
+    scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {400.0, 409.75}, .width = 100.0, .height = 20.0,
+                            .mass = 1.0, .friction = 0.8, .restitution = 0.2});
+    scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {400.0, 369.5}, .width = 60.0, .height = 60.0,
+                            .mass = heavy, .friction = 0.8, .restitution = 0.2});
+    return scene;
+}
+
 SceneDescription slope() {
     constexpr double kRadius = 20.0;
     SceneDescription scene;
@@ -256,6 +267,7 @@ std::vector<NamedScene> shipped() {
     return {{"pyramid_10", pyramid(10)}, {"pyramid_20", pyramid(20)}, {"rain_100", rain(100)},
             {"rain_400", rain(400)},     {"rain_1000", rain(1000)},   {"rain_1600", rain(1600)},
             {"gas", gas()},              {"projectile", projectile()}, {"slide", slide()},
+            {"heavy_on_light", heavy_on_light()},
             {"slope", slope()},          {"thin_wall", thin_wall()}};
 }
 

@@ -37,6 +37,10 @@ inline constexpr double kProjectileGravity = 100.0;
 // A 40 x 20 box sliding at 200 px/s on a static floor, friction 0.5 on both, gravity
 // 100: Coulomb's law stops it after v^2 / (2 mu g) = 400 px.
 SceneDescription slide();
+
+// A box of mass `heavy` (60 x 60) on a slab of mass 1 (100 x 20) on a static floor,
+// 0.25 px apart, gravity 20: the scene library's heavy_on_light.json (100 : 1).
+SceneDescription heavy_on_light(double heavy = 100.0);
 inline constexpr double kSlideSpeed = 200.0;
 inline constexpr double kSlideFriction = 0.5;
 inline constexpr double kSlideGravity = 100.0;

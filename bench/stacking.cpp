@@ -127,6 +127,8 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
                   {Knob::substeps, range},       {Knob::integrator},             {Knob::friction_model},
                   {Knob::rotation}};
     if (small) plan.knobs.push_back({Knob::broad_phase});
+    plan.knobs.insert(plan.knobs.end(), {{Knob::solver}, {Knob::velocity_iterations}, {Knob::warm_starting},
+                                         {Knob::position_method}});
     plan.measure = stacking(settle, seconds);
     plan.box2d = true;
     plan.error = {"top box moved (px)", [](const Metrics& m) { return m.top_drift; }, 1e-3};
@@ -136,6 +138,52 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
     StudyResult result = run_sweep(context, plan);
     add_advice(rows, result);
     return result;
+}
+
+namespace {
+
+constexpr double kHeavySeconds = 60.0;
+constexpr double kQuickHeavySeconds = 2.0;
+
+// The deepest overlap of any two shapes seen over the run, looked at once a second,
+// and how far the heavy box (the last body) moved from where it started.
+Measure heavy_load(double seconds) {
+    return [seconds](BenchWorld& world, const WorldDescription& settings) {
+        const Snapshot start = world.snapshot();
+        const long per_second = steps_for(1.0, settings.dt);
+        double deepest = 0.0;
+        for (double t = 0.0; t < seconds; t += 1.0) {
+            world.run(per_second);
+            deepest = std::max(deepest, penetration(world.snapshot()).max);
+        }
+        const Snapshot end = world.snapshot();
+        Metrics metrics;
+        metrics.penetration_max = deepest;
+        metrics.top_drift = oracle::center(end.back().shape).distance(oracle::center(start.back().shape));
+        return metrics;
+    };
+}
+
+}  // namespace
+
+StudyResult heavy_on_light_study(const StudyContext& context) {
+    const double seconds = context.quick ? kQuickHeavySeconds : kHeavySeconds;
+    SweepPlan plan;
+    plan.study = "heavy_on_light";
+    plan.heading = "A heavy load: a box 100 times heavier than the slab under it";
+    plan.question = "A box of mass 100 (60 px) on a slab of mass 1 (100 x 20 px) on a static floor, 0.25 px apart "
+                    "at first, run for " + figure(seconds) + " s. *Overlap max* is the deepest overlap of two "
+                    "shapes seen over the run (looked at once a second, by the collision oracle): the slab pressed "
+                    "into the floor; *box moved* is how far the heavy box's centre moved, which is 0.25 px when it "
+                    "only closes the gap.";
+    plan.knobs = {{Knob::relaxation_iterations}, {Knob::solver}, {Knob::velocity_iterations},
+                  {Knob::warm_starting}, {Knob::position_method}};
+    plan.measure = heavy_load(seconds);
+    plan.box2d = true;
+    plan.error = {"deepest overlap seen (px)", [](const Metrics& m) { return m.penetration_max; }, 1e-3};
+    plan.columns = {{"overlap max (px)", [](const Row& r) { return figure(r.metrics.penetration_max); }},
+                    {"box moved (px)", [](const Row& r) { return figure(r.metrics.top_drift); }}};
+    return run_sweep(context, plan);
 }
 
 }  // namespace bench

@@ -35,5 +35,6 @@ public:
 std::unique_ptr<StageEngine> s5_1_engine();
 std::unique_ptr<StageEngine> s5_2_engine();
 std::unique_ptr<StageEngine> s5_3_engine();
+std::unique_ptr<StageEngine> s5_4_engine();
 
 }  // namespace bench

@@ -47,6 +47,7 @@ std::string stage_name(Stage stage) {
         case Stage::s5_1: return "5.1";
         case Stage::s5_2: return "5.2";
         case Stage::s5_3: return "5.3";
+        case Stage::s5_4: return "5.4";
         case Stage::box2d: return box2d_version();
     }
     return "";
@@ -57,6 +58,7 @@ std::unique_ptr<StageEngine> stage_engine(Stage stage) {
         case Stage::s5_1: return s5_1_engine();
         case Stage::s5_2: return s5_2_engine();
         case Stage::s5_3: return s5_3_engine();
+        case Stage::s5_4: return s5_4_engine();
         case Stage::box2d: break;
     }
     throw std::invalid_argument("stage_engine: Box2D is not a stage of this book");
@@ -93,6 +95,12 @@ WorldDescription resolved(Stage stage, const WorldDescription& world) {
     write_default(*adapter, &W::friction_model, {FrictionModel::book, FrictionModel::coulomb}, written);
     write_default(*adapter, &W::rotation, {true, false}, written);
     write_default(*adapter, &W::friction, {true, false}, written);
+    write_default(*adapter, &W::solver, {Solver::book, Solver::sequential_impulse}, written);
+    write_default(*adapter, &W::velocity_iterations, {1, 2, 4, 8, 16, 32}, written);
+    write_default(*adapter, &W::warm_starting, {true, false}, written);
+    write_default(*adapter, &W::position_method,
+                  {PositionMethod::split_impulse, PositionMethod::baumgarte, PositionMethod::relax}, written);
+    write_default(*adapter, &W::restitution_threshold, {30.0, 0.0}, written);
     return written;
 }
 

@@ -13,6 +13,7 @@ std::vector<Study> all_studies() {
         {"gas", gas_study},
         {"projectile", trajectory_study},
         {"slide", slide_study},
+        {"heavy_on_light", heavy_on_light_study},
         {"slope", slope_study},
         {"thin_wall", tunnelling_study},
         {"scale", scale_study},

@@ -45,6 +45,7 @@ StudyResult box2d_target_study(const StudyContext& context);
 StudyResult gas_study(const StudyContext& context);
 StudyResult trajectory_study(const StudyContext& context);
 StudyResult slide_study(const StudyContext& context);
+StudyResult heavy_on_light_study(const StudyContext& context);
 StudyResult slope_study(const StudyContext& context);
 StudyResult tunnelling_study(const StudyContext& context);
 StudyResult scale_study(const StudyContext& context);

@@ -1,6 +1,8 @@
 # Runs a stage's default program into ACTUAL, then checks every picture in EXPECTED
 # against the one of the same name in ACTUAL. Used by the <stage>.pictures tests.
-execute_process(COMMAND ${PROGRAM} --out ${ACTUAL} RESULT_VARIABLE status)
+# ARGUMENTS (a list, optional) goes to the program first: a stage's second set of
+# pictures runs a scene (5.4's pyramid).
+execute_process(COMMAND ${PROGRAM} ${ARGUMENTS} --out ${ACTUAL} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${PROGRAM} exited with status ${status}")
 endif()

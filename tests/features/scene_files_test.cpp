@@ -82,6 +82,14 @@ const std::map<std::string, std::string> kEveryWorldKey{
     {"friction_model", "\"coulomb\""},
     {"rotation", "false"},
     {"friction", "false"},
+    {"solver", "\"sequential_impulse\""},
+    {"velocity_iterations", "4"},
+    {"position_iterations", "2"},
+    {"warm_starting", "false"},
+    {"restitution_threshold", "10"},
+    {"position_method", "\"baumgarte\""},
+    {"position_rate", "0.3"},
+    {"slop", "0.5"},
 };
 
 // The keys each stage reads, as docs/scene_format.md tables them: the book's settings
@@ -101,6 +109,10 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
     {"s5_3", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
               "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
               "friction_model", "rotation", "friction"}},
+    {"s5_4", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
+              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
+              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop"}},
 };
 
 std::string commaList(const std::vector<std::string>& words) {

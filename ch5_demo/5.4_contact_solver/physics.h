@@ -1,0 +1,79 @@
+#pragma once
+// The physics component (the book's EngineCore/Physics.js). Once per fixed step the
+// core hands it the world's shapes, and it finds the pairs that collide, pushes them
+// apart and changes their velocities.
+//
+// Testing every pair is O(n^2): n shapes make n (n - 1) / 2 pairs. Each pair first goes
+// through the cheap broad phase (do the bounding circles overlap?), and only pairs
+// that pass it get the exact, costlier narrow phase (collisionTest), which also says
+// how deep they overlap and in which direction. Which pairs the pass looks at, and
+// which of them reach the narrow phase, the world's broad phase decides
+// (broad_phase.h): the book's bounding circles, or a grid that skips far-apart pairs.
+//
+// Positional correction (4.2): an overlap is undone by moving the two shapes apart
+// along the collision normal, the lighter one further (a static one not at all). One
+// pair's correction can push a shape into a third one, so the pass runs several times
+// per step (relaxation), each pass correcting every pair it finds at once, and each
+// only part of the overlap, so that shapes in a pile settle in small moves rather than
+// jumping back and forth.
+//
+// Collision impulses (4.3): each pair the pass resolves also has its velocities
+// changed, by an impulse along the normal (the bounce) and one along the tangent
+// (friction), so that shapes bounce, slow down and come to rest.
+//
+// Angular impulses (4.4): an impulse that does not act through a shape's centre also
+// turns it, so the impulses act at the contact point, on the velocities of the two
+// shapes there, and change their angular velocities too.
+//
+// This stage adds a second way to resolve the contacts (world.solver): the sequential
+// impulse solver of contact_solver.h, in place of the relaxation passes.
+//
+// From 4.3 on the book's pass no longer draws the collision info. Ours still records
+// what the last relaxation pass found, for the tests to read.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "broad_phase.h"
+#include "collision_info.h"
+#include "contact_solver.h"
+#include "rigid_shape.h"
+#include "world_settings.h"
+
+namespace engine {
+
+// Two shapes the pass found colliding, by their places in the list; first < second.
+struct Collision {
+    std::size_t first;
+    std::size_t second;
+    CollisionInfo info;  // its normal points from the first shape towards the second
+};
+
+// The narrow phase. The info's normal is turned, where needed, to point from `a`
+// towards `b`, whichever shape's test worked it out.
+std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& b);
+// The book's broad phase, the bounding circles, then the narrow phase.
+std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b);
+
+class Physics {
+public:
+    // world.relaxation_iterations passes, each testing every pair of shapes once and
+    // resolving each pair that collides (a pair of two static shapes is tested too, as
+    // in the book; only its resolution leaves it as it is). With the sequential impulse
+    // solver: one look at every pair, then the solver (contact_solver.h).
+    void collision(ShapeList shapes, const WorldSettings& world);
+    const std::vector<Collision>& collisions() const { return collisions_; }
+    // The pairs the broad phase handed out over the last collision() call.
+    const PairStatistics& pairStatistics() const { return broad_phase_.statistics(); }
+    const ContactSolver& contactSolver() const { return contact_solver_; }
+
+private:
+    std::vector<Collision> collisions_;
+    BroadPhase broad_phase_;
+    ContactSolver contact_solver_;
+};
+
+}  // namespace engine
