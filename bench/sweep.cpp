@@ -73,7 +73,7 @@ std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
             });
             break;
         case Knob::velocity_iterations:
-            for (int iterations : {2, 4, 8, 16}) {
+            for (int iterations : {2, 4, 8, 12, 16}) {
                 add("SI, iterations " + std::to_string(iterations), [=](W& w) {
                     w.solver = Solver::sequential_impulse;
                     w.velocity_iterations = iterations;

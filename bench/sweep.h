@@ -4,7 +4,7 @@
 //   relaxation_iterations {1, 2, 4, 8, 15, 30}   correction_rate {0.2, 0.4, 0.6, 0.8, 1}
 //   dt {1/30, 1/60, 1/120, 1/240}   broad_phase: each   substeps {1, 2, 4, 8}
 //   integrator: each   friction_model: each   rotation off   friction off
-//   solver sequential_impulse, and with it: velocity_iterations {2, 4, 8, 16},
+//   solver sequential_impulse, and with it: velocity_iterations {2, 4, 8, 12, 16},
 //   warm_starting off, position_method: each
 // One at a time, so each row says what that one knob does. Each setting runs on the
 // oldest stage of the study that can express it (stages.h): passes, correction and dt
@@ -31,7 +31,7 @@ enum class Knob {
     rotation,
     friction,
     solver,               // 5.4: the sequential impulse solver with its defaults
-    velocity_iterations,  // ... with 2, 4, 8, 16 velocity iterations
+    velocity_iterations,  // ... with 2, 4, 8, 12, 16 velocity iterations
     warm_starting,        // ... without warm starting
     position_method       // ... with each way of removing overlap
 };

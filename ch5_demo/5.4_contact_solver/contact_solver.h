@@ -107,6 +107,7 @@ private:
         // impulses, k12 below, leaves the 2 x 2 system well conditioned.
         bool solve_as_pair = false;
         double k11 = 0.0, k12 = 0.0, k22 = 0.0;  // the speeds unit impulses at 1, 2 make at 1, 2
+        double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1, when solved as a pair
     };
     void findContacts(ShapeList shapes, BroadPhase& broad_phase, const WorldSettings& world,
                       std::vector<Collision>& found);
