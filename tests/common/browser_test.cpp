@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "captured_output.h"
 #include "browser.h"
 #include "contact_sheet.h"
 #include "png_io.h"
@@ -89,21 +90,13 @@ struct Result {
 Result run(const browser::Options& options) {
     browser::Window window(options.frame_ms, browser::Document{browser::Canvas(40, 30), ""});
     RecordingScripts scripts(window.document, window.clock);
-    std::ostringstream out, err;
-    std::streambuf* old_out = std::cout.rdbuf(out.rdbuf());
-    std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
     Result result;
-    try {
+    {
+        const test::CapturedOutput captured;
         result.status = browser::run(scripts, window, options);
-    } catch (...) {
-        std::cout.rdbuf(old_out);
-        std::cerr.rdbuf(old_err);
-        throw;
+        result.out = captured.out();
+        result.err = captured.err();
     }
-    std::cout.rdbuf(old_out);
-    std::cerr.rdbuf(old_err);
-    result.out = out.str();
-    result.err = err.str();
     result.log = scripts.log;
     result.last_page = browser::render_page(window.document);
     return result;
@@ -338,13 +331,12 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
         options.scale = c.scale;
         browser::Window window(options, browser::Document{browser::Canvas(c.width, c.height), ""});
         CostlyScripts scripts(c.shapes);
-        std::ostringstream err;
-        std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
+        const test::CapturedOutput captured;
         const int status = browser::run(scripts, window, options);
-        std::cerr.rdbuf(old_err);
+        const std::string err = captured.err();
         CHECK(status == 2);
-        CHECK(is_one_line(err.str()));
-        CHECK_THAT(err.str(), Catch::StartsWith(c.says));
+        CHECK(is_one_line(err));
+        CHECK_THAT(err, Catch::StartsWith(c.says));
         CHECK(fs::is_empty(temp.path));
     }
     // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests (never run here).

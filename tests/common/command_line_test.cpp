@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "captured_output.h"
 #include "command_line.h"
 #include "gif_writer.h"
 #include "live_window.h"
@@ -26,25 +27,7 @@ const browser::StageDefaults kDefaults{
                       {.name = "--dump", .value_name = "FILE", .help = "state dump", .default_value = ""}},
 };
 
-// Sends std::cout and std::cerr into strings while it lives.
-class CapturedOutput {
-public:
-    CapturedOutput() : old_out_(std::cout.rdbuf(out_.rdbuf())), old_err_(std::cerr.rdbuf(err_.rdbuf())) {}
-    ~CapturedOutput() {
-        std::cout.rdbuf(old_out_);
-        std::cerr.rdbuf(old_err_);
-    }
-    CapturedOutput(const CapturedOutput&) = delete;
-    CapturedOutput& operator=(const CapturedOutput&) = delete;
-
-    std::string out() const { return out_.str(); }
-    std::string err() const { return err_.str(); }
-
-private:
-    std::ostringstream out_, err_;
-    std::streambuf* old_out_;
-    std::streambuf* old_err_;
-};
+using test::CapturedOutput;
 
 struct Outcome {
     ParsedCommandLine parsed;

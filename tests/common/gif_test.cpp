@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "captured_output.h"
 #include "browser.h"
 #include "command_line.h"
 #include "gif_writer.h"
@@ -64,20 +65,7 @@ struct RunResult {
     Image last_page;
 };
 
-// Sends std::cout and std::cerr into strings while it lives.
-struct CapturedOutput {
-    CapturedOutput() : old_out(std::cout.rdbuf(out.rdbuf())), old_err(std::cerr.rdbuf(err.rdbuf())) {}
-    ~CapturedOutput() {
-        std::cout.rdbuf(old_out);
-        std::cerr.rdbuf(old_err);
-    }
-    CapturedOutput(const CapturedOutput&) = delete;
-    CapturedOutput& operator=(const CapturedOutput&) = delete;
-
-    std::ostringstream out, err;
-    std::streambuf* old_out;
-    std::streambuf* old_err;
-};
+using test::CapturedOutput;
 
 // Runs the growing square on a 40 x 30 canvas (a 420 x 30 page).
 RunResult run_square(const browser::Options& options) {
@@ -87,8 +75,8 @@ RunResult run_square(const browser::Options& options) {
     {
         CapturedOutput captured;
         result.status = browser::run(scripts, window, options);
-        result.out = captured.out.str();
-        result.err = captured.err.str();
+        result.out = captured.out();
+        result.err = captured.err();
     }
     result.last_page = browser::render_page(window.document);
     return result;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "captured_output.h"
 #include "browser.h"
 #include "gif_writer.h"
 #include "live.h"
@@ -107,15 +108,13 @@ Session play(const browser::Options& options, std::vector<std::vector<LiveInput>
     MarkingPage page(window.document);
     StandInScreen screen(std::move(batches));
     screen.on_close = std::move(on_close);
-    std::ostringstream out, err;
-    std::streambuf* old_out = std::cout.rdbuf(out.rdbuf());
-    std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
     Session session;
-    session.status = browser::run_live(page, window, options, screen);
-    std::cout.rdbuf(old_out);
-    std::cerr.rdbuf(old_err);
-    session.out = out.str();
-    session.err = err.str();
+    {
+        const test::CapturedOutput captured;
+        session.status = browser::run_live(page, window, options, screen);
+        session.out = captured.out();
+        session.err = captured.err();
+    }
     session.shown = screen.shown;
     session.closed = screen.closed;
     return session;
@@ -130,10 +129,11 @@ browser::Image replay(const fs::path& out, const std::string& keys, int frames) 
     options.keys = browser::KeyScript::parse(keys);
     browser::Window window(options.frame_ms, browser::Document{browser::Canvas(kCanvasWidth, kCanvasHeight), ""});
     MarkingPage page(window.document);
-    std::ostringstream quiet;
-    std::streambuf* old_out = std::cout.rdbuf(quiet.rdbuf());
-    const int status = browser::run(page, window, options);
-    std::cout.rdbuf(old_out);
+    int status = 0;
+    {
+        const test::CapturedOutput quiet;
+        status = browser::run(page, window, options);
+    }
     REQUIRE(status == 0);
     return browser::read_png(out / "final.png");
 }
