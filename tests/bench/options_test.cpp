@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "captured_output.h"
 #include "options.h"
 #include "stage_program.h"  // runs STAGE_PROGRAM, here the bench
 
@@ -20,12 +21,10 @@ struct Parsed {
 
 Parsed parse(std::vector<const char*> words) {
     words.insert(words.begin(), "bench");
-    std::ostringstream captured;
-    std::streambuf* old = std::cerr.rdbuf(captured.rdbuf());
+    const test::CapturedOutput captured;
     Parsed parsed{bench::parse_bench_command_line(static_cast<int>(words.size()), words.data(), "results", kStudies),
                   ""};
-    std::cerr.rdbuf(old);
-    parsed.err = captured.str();
+    parsed.err = captured.err();
     return parsed;
 }
 
