@@ -33,6 +33,13 @@ void stroked(Canvas& canvas, Color color, Draw draw) {
 
 }  // namespace
 
+void line(Canvas& canvas, Vec2 from, Vec2 to, Color color) {
+    stroked(canvas, color, [&] {
+        canvas.moveTo(from.x, from.y);
+        canvas.lineTo(to.x, to.y);
+    });
+}
+
 void arrow(Canvas& canvas, Vec2 tail, Vec2 head, Color color) {
     const Vec2 shaft = head - tail;
     const double length = shaft.length();

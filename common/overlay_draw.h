@@ -21,6 +21,9 @@ inline constexpr double kHeadAngle = 0.45;    // rad, about 26 degrees
 inline constexpr double kMarkerReach = 3.0;       // px
 inline constexpr Vec2 kLabelOffset{5.0, -16.0};   // px, from the point to the label's top-left
 
+// A straight line from `from` to `to` (a pair, a lever arm).
+void line(Canvas& canvas, Vec2 from, Vec2 to, Color color);
+
 // A straight arrow from `tail` to `head`. An arrow shorter than a hundredth of a pixel
 // has no direction and draws nothing.
 void arrow(Canvas& canvas, Vec2 tail, Vec2 head, Color color);
