@@ -93,10 +93,11 @@ TEST_CASE("s4_4: the overlay draws the lever arms from both centres to the conta
 
 // The README's walkthrough ("Play it live"): with movement on, a circle is made low
 // over the steep platform and a box up to its left, each given 100 px/s downwards (K),
-// since gravity alone (10 px/s^2) would take seconds to bring them down.
+// since gravity alone (10 px/s^2) would take seconds to bring them down; then the
+// cursor moves out of the box's way.
 TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns as it lands") {
     test::ScratchFolder folder("s4_4_walkthrough");
-    const std::string script = "comma a*20 s*8 g 7 k*100 0 a*6 w*4 f 8 k*100 0";
+    const std::string script = "comma a*20 s*8 g 7 k*100 0 a*4 w*4 f 8 k*100 0 w*10";
     const test::ProgramRun run = test::runStageProgram(
         folder, "--keys \"" + script + "\" --frames 240 --every 30 --out " + test::quoted(folder.path / "out") +
                     " --dump " + test::quoted(folder.path / "dump.csv"));
