@@ -1,0 +1,35 @@
+#pragma once
+// A README's walkthrough as a test runs it: the stage's program with the README's key
+// script and frames, and the state dump (--dump) to check what the text promises.
+// From 4.1 on, where the programs write state dumps.
+
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scratch_folder.h"
+#include "stage_program.h"
+
+namespace test {
+
+// Every row of the dump of `script` run for `frames` frames.
+inline std::vector<DumpRow> runWalkthrough(const ScratchFolder& folder, const std::string& script, int frames) {
+    const ProgramRun run = runStageProgram(folder, "--keys \"" + script + "\" --frames " + std::to_string(frames) +
+                                                       " --out " + quoted(folder.path / "out") + " --dump " +
+                                                       quoted(folder.path / "dump.csv"));
+    REQUIRE(run.status == 0);
+    return readDump(folder.path / "dump.csv");
+}
+
+// Object `index` after fixed step `step`.
+inline DumpRow stateAt(const std::vector<DumpRow>& rows, long step, std::size_t index) {
+    for (const DumpRow& row : rows) {
+        if (row.step == step && row.index == index) return row;
+    }
+    FAIL("no row for step " << step << ", object " << index);
+    return {};
+}
+
+}  // namespace test
