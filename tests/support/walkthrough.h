@@ -1,7 +1,8 @@
 #pragma once
 // A README's walkthrough as a test runs it: the stage's program with the README's key
 // script and frames, and the state dump (--dump) to check what the text promises.
-// From 4.1 on, where the programs write state dumps.
+// From 4.1 on, where the programs write state dumps; from 2.1 on, the script played on
+// a page in the test itself (playScript), for what a dump does not hold.
 
 #include <catch2/catch.hpp>
 
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "keys.h"
 #include "scratch_folder.h"
 #include "stage_program.h"
 
@@ -30,6 +32,19 @@ inline DumpRow stateAt(const std::vector<DumpRow>& rows, long step, std::size_t 
     }
     FAIL("no row for step " << step << ", object " << index);
     return {};
+}
+
+// Plays `script` for `frames` frames on a page with a window, a core and a user
+// control script (stage_fixture.h's StageFixture), as the browser does: the clock moves
+// on a frame, that frame's keys are pressed, the frame runs.
+template <class Page>
+void playScript(Page& page, const std::string& script, int frames) {
+    const browser::KeyScript keys = browser::KeyScript::parse(script);
+    for (int k = 0; k < frames; ++k) {
+        page.window.clock.advanceFrame();
+        for (const browser::Key key : keys.pressesAt(k)) page.control.onKeyDown(key);
+        page.core.runGameLoop();
+    }
 }
 
 }  // namespace test
