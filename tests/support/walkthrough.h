@@ -34,17 +34,24 @@ inline DumpRow stateAt(const std::vector<DumpRow>& rows, long step, std::size_t 
     return {};
 }
 
-// Plays `script` for `frames` frames on a page with a window, a core and a user
-// control script (stage_fixture.h's StageFixture), as the browser does: the clock moves
-// on a frame, that frame's keys are pressed, the frame runs.
+// Plays frames `from` to `to` - 1 of `script` on a page with a window, a core and a
+// user control script (stage_fixture.h's StageFixture), as the browser does: the clock
+// moves on a frame, that frame's keys are pressed, the frame runs. A test that looks
+// at the page between frames plays the script in pieces.
 template <class Page>
-void playScript(Page& page, const std::string& script, int frames) {
+void playScript(Page& page, const std::string& script, int from, int to) {
     const browser::KeyScript keys = browser::KeyScript::parse(script);
-    for (int k = 0; k < frames; ++k) {
+    for (int k = from; k < to; ++k) {
         page.window.clock.advanceFrame();
         for (const browser::Key key : keys.pressesAt(k)) page.control.onKeyDown(key);
         page.core.runGameLoop();
     }
+}
+
+// The whole of a script's first `frames` frames.
+template <class Page>
+void playScript(Page& page, const std::string& script, int frames) {
+    playScript(page, script, 0, frames);
 }
 
 }  // namespace test
