@@ -43,10 +43,11 @@ namespace engine {
 
 class Physics {
 public:
-    // world.relaxation_iterations passes, each testing every pair of shapes once and
-    // resolving each pair that collides (a pair of two static shapes is tested too, as
-    // in the book; only its resolution leaves it as it is). With the sequential impulse
-    // solver: one look at every pair, then the solver (contact_solver.h).
+    // world.relaxation_iterations passes, each resolving every pair of shapes that
+    // collides, exactly as the book's passes do; but a pair whose answer is already
+    // known is not tested again (broad_phase.h), and a pass that changed nothing is the
+    // step's last (physics.cpp). With the sequential impulse solver: one look at every
+    // pair, then the solver (contact_solver.h).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.
