@@ -39,9 +39,9 @@ struct Window {
 struct StepCost {
     double dt_s = 1.0 / 60.0;  // the fixed step, s
     int substeps = 1;
-    int passes = 1;            // collision passes a sub-step (0 counts as 1: the pairs are still found)
-    std::size_t shapes = 0;    // at the start; each F or G press may add one more
-    bool draws_pairs = true;   // every frame draws a line for every pair that collides
+    int passes = 1;  // collision passes a sub-step (0 counts as 1: the pairs are still found)
+    std::size_t shapes = 0;  // at the start; each F or G press may add one more
+    bool draws_pairs = true;  // every frame draws a line for every pair that collides
 };
 
 // What a stage's index.html registers with the browser.
