@@ -185,19 +185,6 @@ double pair_test_bound(const StepCost& step, const Options& options) {
     return steps * std::max(step.substeps, 1) * per_substep + drawn;
 }
 
-Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {
-    document.canvas.setScale(options.scale);
-    overlay = options.overlay;
-}
-
-void press_key(PageScripts& scripts, Window& window, const Options& options, Key key) {
-    if (options.overlay_offered && key == kOverlayKey) {
-        window.overlay = !window.overlay;
-    } else {
-        scripts.onKeyDown(key);
-    }
-}
-
 int run(PageScripts& scripts, Window& window, const Options& options) {
     // parse_command_line never gives these; a test or a stage that builds Options by hand might.
     if (options.frames < 1 || (options.gif && options.gif_every < 1)) {

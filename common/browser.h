@@ -2,42 +2,17 @@
 // The browser session: it gives the page's scripts a window (the document with its
 // canvas and echo panel, and the clock behind Date.now()), presses the scripted keys,
 // calls the scripts back every animation frame, and saves the page as PNG pictures.
+// The page's side of it (Window, PageScripts) is page_scripts.h, which the live session
+// (live.h) shares: it plays the same page, and browser::run hands it over with --live.
 
 #include <filesystem>
 #include <string>
 #include <utility>
 
-#include "clock.h"
 #include "command_line.h"
-#include "keys.h"
-#include "page.h"
+#include "page_scripts.h"
 
 namespace browser {
-
-// What the page's scripts can reach: window.document and Date.now().
-struct Window {
-    explicit Window(double frame_ms, Document page = Document()) : document(std::move(page)), clock(frame_ms) {}
-    // A stage's window: the clock runs at options.frame_ms, and the canvas has
-    // options.scale device pixels a unit (--scale), which blanks it.
-    explicit Window(const Options& options, Document page = Document());
-    Document document;
-    Clock clock;
-    // Whether the page draws its overlay (overlay_draw.h) this frame: set from --overlay,
-    // turned by kOverlayKey. The page reads it; the browser owns it, as it owns the
-    // clock, so the page's own scripts stay the book's.
-    bool overlay = false;
-};
-
-// What one fixed step of a page's world costs at most, for the run's budget: every
-// step tests every pair of shapes once a collision pass, `passes` times a sub-step; and
-// a page that draws the collisions it found (chapter 3 to 4.2) draws a line a pair.
-struct StepCost {
-    double dt_s = 1.0 / 60.0;  // the fixed step, s
-    int substeps = 1;
-    int passes = 1;            // collision passes a sub-step (0 counts as 1: the pairs are still found)
-    std::size_t shapes = 0;    // at the start; each F or G press may add one more
-    bool draws_pairs = true;   // every frame draws a line for every pair that collides
-};
 
 // The budget of a run, so that every run fits in memory and ends in minutes
 // (docs/scene_format.md, "Limits", has the worst case measured):
@@ -57,21 +32,6 @@ inline constexpr double kDrawnPairCost = 1000.0;
 // (those at the start and one an F or G press), and for a page that draws its pairs,
 // kDrawnPairCost a pair a frame.
 double pair_test_bound(const StepCost& step, const Options& options);
-
-// What a stage's index.html registers with the browser.
-class PageScripts {
-public:
-    virtual ~PageScripts() = default;
-    virtual void onKeyDown(Key key) = 0;  // <body onkeydown="userControl(event)">
-    virtual void onAnimationFrame() = 0;  // the requestAnimationFrame callback
-    // For the budget: a page that says nothing counts as one pass a 1/60 s step over
-    // the shapes its key presses make.
-    virtual StepCost stepCost() const { return {}; }
-};
-
-// A key press reaching the page: on a stage with an overlay, kOverlayKey turns
-// window.overlay on or off; every other key goes to the page's onKeyDown.
-void press_key(PageScripts& scripts, Window& window, const Options& options, Key key);
 
 // Runs options.frames (>= 1) frames. Before frame k the clock advances by one frame,
 // the keys scripted for frame k are pressed, then the animation frame runs. The page is

@@ -1,6 +1,5 @@
 #include "live.h"
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -57,10 +56,8 @@ std::string replay_command(const LiveOptions& live, int frames) {
 // Writes the script beside its place and renames it in, so a reader never finds half
 // a script. Throws FileError with a one-line reason.
 void write_script(const fs::path& file, const std::string& text) {
-    std::string suffix = ".partial-";  // appended: g++ 12 warns falsely about "." + to_string
-    suffix += std::to_string(::getpid());
     fs::path partial = file;
-    partial += suffix;
+    partial += ".partial" + process_suffix();
     {
         std::ofstream out(partial, std::ios::binary | std::ios::trunc);
         out << text << '\n';

@@ -1,6 +1,5 @@
 #include "output_folder.h"
 
-#include <unistd.h>
 
 #include <system_error>
 #include <utility>
@@ -30,12 +29,6 @@ void check_replaceable(const fs::path& out, const std::string& marker) {
 
 // "-<process id>". Built by appending: g++ 12 gives a false -Wrestrict warning
 // for "-" + std::to_string(...).
-std::string process_suffix() {
-    std::string suffix = "-";
-    suffix += std::to_string(::getpid());
-    return suffix;
-}
-
 }  // namespace
 
 // "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator

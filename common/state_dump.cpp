@@ -9,7 +9,6 @@
 #include <utility>
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <optional>
@@ -72,12 +71,6 @@ int place_in(const fs::path& path, const fs::path& out) {
     const auto [end, rest] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
     if (end != folder.end()) return -1;
     return rest == file.end() ? 0 : 1;
-}
-
-std::string process_suffix() {
-    std::string suffix = "-";
-    suffix += std::to_string(::getpid());
-    return suffix;
 }
 
 }  // namespace
