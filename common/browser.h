@@ -119,7 +119,9 @@ public:
 // and every partial file removed (interruption.h).
 // With options.live.on it plays the page in a window instead (live.h), writing no
 // pictures: 0 when the reader closes it, 1 with one line when no window can be opened
-// or the recorded key script or screenshot cannot be written.
+// (no display named at all, live_window.h) or the recorded key script or screenshot
+// cannot be written, 2 when --record names a place write_guard.h refuses; SIGINT and
+// SIGTERM end it as they end a run.
 int run(PageScripts& scripts, Window& window, const Options& options);
 
 }  // namespace browser

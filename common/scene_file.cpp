@@ -80,10 +80,13 @@ bool is_plain_word(std::string_view key) {
 
 std::string member_path(const std::string& object, const std::string& key) {
     std::string path = object;
-    // A long key is shown shortened and quoted, so that its cut shows.
-    if (!is_plain_word(key) || key.size() > kLongestPlainKey) {
-        return path.append("[").append(shown(json(shortened(key)))).append("]");
+    if (key.size() > kLongestPlainKey) {
+        // Its start, quoted, with "..." inside the quotes where it is cut.
+        std::string start = shown(json(key.substr(0, kLongestPlainKey / 2)));
+        if (start.ends_with('"')) start.pop_back();
+        return path.append("[").append(start).append("...\"]");
     }
+    if (!is_plain_word(key)) return path.append("[").append(shown(json(key))).append("]");
     if (!path.empty()) path += '.';
     return path.append(key);
 }
