@@ -111,7 +111,7 @@ public:
 // leaves a half-written folder.
 // Returns the exit status: 0; 1 with a one-line message on stderr when the pictures
 // cannot be written; 2 with one line, before anything is written, when the run is
-// refused: options.gif asks for a GIF that this build cannot write (gif_writer.h's
+// refused: options.gif asks for a GIF that this build cannot write (build_features.h's
 // kNoGifSupport), options.out_dir may not be replaced (output_folder.h), or the run
 // would go over its budget (kMaxDevicePixels to kMaxPixelsEncoded); kOutOfMemoryStatus
 // with one line when memory runs out all the same.
