@@ -13,11 +13,11 @@
 #include <algorithm>
 #include <optional>
 
-#include "message_text.h"
 #include "browser.h"  // is_picture_name
+#include "message_text.h"
 #include "output_folder.h"
-#include "write_guard.h"
 #include "scene_file.h"
+#include "write_guard.h"
 
 namespace browser {
 
