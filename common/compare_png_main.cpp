@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -21,6 +22,7 @@
 
 #include "image_compare.h"
 #include "message_text.h"
+#include "output_folder.h"  // kManifest
 #include "png_io.h"
 #include "write_guard.h"
 
@@ -42,9 +44,20 @@ std::string size_text(const browser::Image& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-// An old diff picture would mislead once the pictures match; only a plain file goes
-// (write_guard.h's rule), never what a link leads to.
+// Whether this program wrote DIR/name before: --diff-dir lists the diff pictures it
+// writes in DIR's manifest (output_folder.h's format), and removes only those.
+bool wrote_before(const fs::path& file) {
+    std::ifstream manifest(file.parent_path() / browser::kManifest);
+    for (std::string line; std::getline(manifest, line);) {
+        if (line == file.filename().string()) return true;
+    }
+    return false;
+}
+
+// An old diff picture would mislead once the pictures match: removed when this program
+// wrote it and it is still a plain file (write_guard.h's rule), never what a link leads to.
 void remove_old_diff(const fs::path& file) {
+    if (!wrote_before(file)) return;
     try {
         browser::check_may_write(file, browser::WriteTarget::file);
     } catch (const browser::OutputRefused&) {
@@ -91,8 +104,15 @@ int compare_pair(const std::string& name, const fs::path& expected_path, const f
             const fs::path inputs[] = {expected_path, actual_path};
             browser::check_may_write(*diff_path, browser::WriteTarget::file, inputs);
             browser::write_png(*diff_path, difference.diff);
+            if (!settings.diff_dir.empty() && !wrote_before(*diff_path)) {
+                browser::OutputFolder::add_to_manifest(settings.diff_dir, name);
+            }
         } catch (const browser::FileError& error) {
             std::cerr << kProgram << ": " << error.what() << "\n";
+            return kTrouble;
+        } catch (const fs::filesystem_error& error) {
+            std::cerr << kProgram << ": cannot list the diff in " << browser::in_quotes(settings.diff_dir.string())
+                      << ": " << error.code().message() << "\n";
             return kTrouble;
         }
         std::cout << "  diff: " << diff_path->string() << "\n";

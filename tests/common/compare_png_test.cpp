@@ -117,3 +117,22 @@ TEST_CASE("compare_png: --share must be a number from 0 to 1, and NaN is none") 
     checkTrouble(folder, quoted(a) + " " + quoted(a) + " --share nan", "--share: must be a number from 0 to 1");
     CHECK(compare(folder, quoted(a) + " " + quoted(a) + " --share 0.5").status == 0);
 }
+
+TEST_CASE("compare_png: --diff-dir removes an old diff picture only when it wrote it") {
+    const test::ScratchFolder folder("compare_png_diff_dir");
+    const fs::path a = folder.path / "a.png", b = folder.path / "b.png", diffs = folder.path / "diffs";
+    browser::write_png(a, browser::Image(2, 2));
+    browser::Image other(2, 2);
+    other.set(0, 0, browser::Color{255, 0, 0, 255});
+    browser::write_png(b, other);
+    // a against b differ: the diff picture diffs/a.png is written and listed.
+    CHECK(compare(folder, quoted(a) + " " + quoted(b) + " --diff-dir " + quoted(diffs)).status == 1);
+    CHECK(fs::is_regular_file(diffs / "a.png"));
+    // a against itself matches: the old diff would mislead, and it was compare_png's.
+    CHECK(compare(folder, quoted(a) + " " + quoted(a) + " --diff-dir " + quoted(diffs)).status == 0);
+    CHECK_FALSE(fs::exists(diffs / "a.png"));
+    // A picture of the reader's under the name of a match stays.
+    std::ofstream(diffs / "b.png") << "the reader's\n";
+    CHECK(compare(folder, quoted(b) + " " + quoted(b) + " --diff-dir " + quoted(diffs)).status == 0);
+    CHECK(fs::exists(diffs / "b.png"));
+}
