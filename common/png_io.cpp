@@ -27,7 +27,7 @@ namespace {
 constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
 [[noreturn]] void fail(const char* doing, const fs::path& path, const std::string& reason) {
-    throw FileError(std::string(doing) + " " + printable(path.string()) + ": " + printable(reason));
+    throw FileError(std::string(doing) + " " + printable(path.string()) + ": " + reason);
 }
 
 // The folder a file goes into: "." for a bare file name.
@@ -98,7 +98,8 @@ Image decode_png(std::span<const unsigned char> bytes) {
                         std::to_string(static_cast<long>(kMostPngPixels)) + " a picture may have");
     }
     unsigned char* pixels = stbi_load_from_memory(bytes.data(), size, &width, &height, &channels_in_file, 4);
-    if (!pixels) throw FileError(std::string("damaged PNG file (") + stbi_failure_reason() + ")");
+    // stb names an unknown chunk by its four bytes, whatever they are (found by fuzz/png_reader).
+    if (!pixels) throw FileError("damaged PNG file (" + printable(stbi_failure_reason()) + ")");
     Image image;
     image.width = width;
     image.height = height;

@@ -4,6 +4,7 @@
 // diff pictures follow write_guard.h's rule, as every file a program here writes does.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -78,6 +79,19 @@ TEST_CASE("compare_png: a picture whose header claims 16000 x 16000 pixels is re
     const fs::path huge = fs::path(FUZZ_SEEDS_DIR) / "png_reader" / "huge_header.png";
     checkTrouble(folder, quoted(picture) + " " + quoted(huge),
                  "it is 16000 x 16000 pixels, more than the 33554432 a picture may have");
+}
+
+TEST_CASE("compare_png: a damaged picture is refused in one line, the bytes stb quotes escaped") {
+    const test::ScratchFolder folder("compare_png_damaged");
+    const fs::path picture = folder.path / "a.png";
+    browser::write_png(picture, browser::Image(2, 2));
+    // Found by fuzz/png_reader: stb names an unknown chunk by its four raw bytes.
+    const fs::path damaged = fs::path(FUZZ_SEEDS_DIR) / "png_reader" / "unknown_chunk.png";
+    const Run run = compare(folder, quoted(picture) + " " + quoted(damaged));
+    CHECK(run.status == 2);
+    CHECK(isOneLine(run.err));
+    CHECK_THAT(run.err, Catch::Contains("PNG chunk not known)"));
+    CHECK(std::none_of(run.err.begin(), run.err.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; }));
 }
 
 TEST_CASE("compare_png: --diff and --diff-dir never replace a link, a FIFO, a device, a second name or an input") {
