@@ -87,11 +87,18 @@ bool gif_possible(bool gif_given, const std::string& program) {
     return false;
 }
 
+// The stage's key list, and the overlay key when it has an overlay.
+std::vector<KeyHelp> with_overlay_key(const StageDefaults& defaults) {
+    std::vector<KeyHelp> keys = defaults.key_help;
+    if (!defaults.overlay.empty()) keys.push_back({key_name(kOverlayKey), "overlay on / off (see --overlay)"});
+    return keys;
+}
+
 // The keys the stage declares, from its key list. A bad name there is the stage's
 // mistake, not the reader's.
 KeySet stage_keys(const StageDefaults& defaults) {
     KeySet keys;
-    for (const KeyHelp& line : defaults.key_help) {
+    for (const KeyHelp& line : with_overlay_key(defaults)) {
         try {
             keys.add(KeySet::parse(line.keys));
         } catch (const KeyScriptError& error) {
@@ -107,10 +114,11 @@ std::string help_footer(const StageDefaults& defaults) {
         "A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
         "a token without @ comes at the frame of the one before.";
     if (defaults.key_help.empty()) return footer + "\nKeys: a-z, 0-9, comma, up, down.";
+    const std::vector<KeyHelp> keys = with_overlay_key(defaults);
     std::size_t widest = 0;
-    for (const KeyHelp& line : defaults.key_help) widest = std::max(widest, line.keys.size());
+    for (const KeyHelp& line : keys) widest = std::max(widest, line.keys.size());
     footer += "\n\nThe keys of this stage, in a --keys script or live with --live:";
-    for (const KeyHelp& line : defaults.key_help) {
+    for (const KeyHelp& line : keys) {
         footer += "\n  " + line.keys + std::string(widest - line.keys.size() + 2, ' ') + line.meaning;
     }
     footer += "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
@@ -168,7 +176,7 @@ struct OptionTexts {
     std::string out, frames, every, gif_every, seed, keys;
     std::string frame_ms;  // read only when given, so the default stays exactly 1000/60
     std::string scale = "1";
-    bool gif = false, no_gif = false, live = false;  // switches: no value to check
+    bool gif = false, no_gif = false, live = false, overlay = false;  // switches: no value to check
     std::string record, live_events, live_screenshot;
     std::map<std::string, std::string> extra;  // the stage's own options, by name
 };
@@ -198,6 +206,9 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
     app.add_option("--scale", texts.scale, "draw the page K times larger (1 to 4), lines and text included,"
                                            " in the window and in the pictures")
         ->type_name("K")->capture_default_str();
+    if (!defaults.overlay.empty()) {
+        app.add_flag("--overlay", texts.overlay, "start with the overlay on: " + defaults.overlay);
+    }
     app.add_flag("--live", texts.live, "play the page in a window, keys from the keyboard (Escape ends)");
     app.add_option("--record", texts.record, "with --live: write the session's key presses to FILE as a key script"
                                               " and print the command that replays it")
@@ -222,7 +233,7 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
 // with a value is more likely a slip, and --no-gif says it plainly.
 void refuse_switch_values(const std::vector<std::string>& arguments) {
     for (const std::string& argument : arguments) {
-        for (const std::string_view flag : {"--gif=", "--no-gif=", "--live="}) {
+        for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay="}) {
             if (argument.starts_with(flag)) {
                 throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
                                  in_quotes(argument) + ")");
@@ -318,6 +329,7 @@ LiveOptions live_options(const CLI::App& app, const OptionTexts& texts, const St
         {"--seed", texts.seed}, {"--frame-ms", texts.frame_ms}, {"--scale", texts.scale}};
     for (const auto& [name, value] : texts.extra) shaping.emplace_back(name, value);
     live.replay_command = replay_command(app, argc, argv, program, shaping);
+    if (texts.overlay) live.replay_command.emplace_back("--overlay");
     // The stage's pictures; for a stage that saves none but final.png, one a half second.
     live.replay_every = defaults.every > 0 ? defaults.every : 30;
     live.replay_gif = !defaults.gif && gif_supported();
@@ -355,6 +367,8 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
             if (app.count(name) > 0 && value.empty()) throw UsageError(name + ": must name a file (got \"\")");
         }
         options.extra = texts.extra;
+        options.overlay_offered = !defaults.overlay.empty();
+        options.overlay = texts.overlay;
         if (texts.live) options.live = live_options(app, texts, defaults, argc, argv, program);
         // Last, so the note about a skipped GIF never comes with an error about another option.
         options.gif = !texts.live && want_gif && gif_possible(texts.gif, program);

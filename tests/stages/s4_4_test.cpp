@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "book_scene.h"
 #include "circle.h"
@@ -10,6 +12,7 @@
 #include "my_game.h"
 #include "platform_check.h"
 #include "rectangle.h"
+#include "walkthrough.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -56,4 +59,29 @@ TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it at 2/3 g s
     }
     const double acceleration = (ball.velocity().dot(downhill) - speed_at_2_5s) / (300 * dt);
     CHECK_THAT(acceleration, test::near(2.0 / 3 * g * std::sin(slope), 0.01 * 2.0 / 3 * g * std::sin(slope)));
+}
+
+// The README's walkthrough ("Play it live"): with movement on, a circle is made low
+// over the steep platform and a box up to its left, each given 100 px/s downwards (K),
+// since gravity alone (10 px/s^2) would take seconds to bring them down; then the
+// cursor moves out of the box's way.
+TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns as it lands") {
+    test::ScratchFolder folder("s4_4_walkthrough");
+    const std::vector<test::DumpRow> rows =
+        test::runWalkthrough(folder, "comma a*20 s*8 g 7 k*100 0 a*4 w*4 f 8 k*100 0 w*10", 240);
+    const auto state = [&rows](long step, std::size_t index) { return test::stateAt(rows, step, index); };
+    const long last = rows.back().step;
+    REQUIRE(state(1, 7).shape == "circle");
+    REQUIRE(state(1, 8).shape == "rectangle");
+    // Gravity pulls through the centre and turns nothing: while a shape flies free its
+    // angular velocity stays exactly 0 and its angle exactly where it was made.
+    CHECK(state(1, 7).angular_velocity == 0.0);
+    CHECK(state(1, 8).angle == 0.0);
+    // The circle falls some 80 px to the slope at about 120 px/s, which takes more than
+    // half a second: at step 10 (a sixth of a second) it is still free.
+    CHECK(state(10, 7).angular_velocity == 0.0);
+    // It has landed and rolls: at the end it spins at over half a radian a second.
+    CHECK(std::abs(state(last, 7).angular_velocity) > 0.5);
+    // The box has turned by more than half a radian in its landing.
+    CHECK(std::abs(state(last, 8).angle) > 0.5);
 }
