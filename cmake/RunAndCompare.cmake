@@ -2,6 +2,10 @@
 # against the one of the same name in ACTUAL. Used by the <stage>.pictures tests.
 # ARGUMENTS (a list, optional) goes to the program first: a stage's second set of
 # pictures runs a scene (5.4's pyramid).
+# ACTUAL is this test's own folder, and its diff/ below is compare_png's, not the
+# program's: a run refuses to replace a folder holding what it did not write, so the
+# test clears it first.
+file(REMOVE_RECURSE ${ACTUAL})
 execute_process(COMMAND ${PROGRAM} ${ARGUMENTS} --out ${ACTUAL} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${PROGRAM} exited with status ${status}")

@@ -46,6 +46,11 @@ struct StepCost {
     int passes = 1;  // collision passes a sub-step (0 counts as 1: the pairs are still found)
     std::size_t shapes = 0;  // at the start; each F or G press may add one more
     bool draws_pairs = true;  // every frame draws a line for every pair that collides
+    // The memory a pair of shapes in contact holds during a step (the collision found,
+    // a solver's contact and what it keeps for the next step), in bytes: at worst every
+    // pair is in contact, as when all the shapes lie on one point.
+    // 100 bytes: the colliding pairs a pass keeps, measured in 4.1 (docs/scene_format.md).
+    double bytes_a_contact = 100.0;
 };
 
 // What a stage's index.html registers with the browser.
