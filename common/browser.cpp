@@ -252,15 +252,6 @@ bool is_picture_name(std::string_view name) {
     return number.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
-std::vector<fs::path> files_read(const Options& options) {
-    std::vector<fs::path> files;
-    if (const auto scene = options.extra.find("--scene"); scene != options.extra.end() && !scene->second.empty()) {
-        files.emplace_back(scene->second);
-    }
-    if (!options.live.events.empty()) files.push_back(options.live.events);
-    return files;
-}
-
 int run(PageScripts& scripts, Window& window, const Options& options) {
     // parse_command_line never gives these; a test or a stage that builds Options by hand might.
     if (options.frames < 1 || (options.gif && options.gif_every < 1)) {

@@ -55,10 +55,6 @@ double encoding_bound(double page_pixels, const Options& options);
 // contact_sheet.png, animation.gif and its partial file).
 bool is_picture_name(std::string_view name);
 
-// The files a run reads (its --scene, its --live-events), which nothing it writes may
-// be or hold (write_guard.h).
-std::vector<std::filesystem::path> files_read(const Options& options);
-
 // The exit status of a run that ran out of memory although its budget let it start (a
 // machine with less memory than the budget allows for): one line on stderr, nothing written.
 inline constexpr int kOutOfMemoryStatus = 4;
