@@ -10,6 +10,8 @@
 #   <id>.<feature>     one test per feature file, also labelled <feature>
 #   <id>.stage         the stage's own tests
 #   <id>.pictures      runs the default program and compares its pictures with expected/
+#   <id>.overlay_pictures  when expected/overlay/ exists: the same run with --overlay,
+#                      compared with expected/overlay/ (labels also pictures and overlay)
 #
 # Each call is also remembered (global properties PHYSICS_STAGES and
 # PHYSICS_STAGE_<id>_<FOLDER|PROGRAM|CHAPTER|FEATURES>), so that cmake/Workbench.cmake
@@ -51,6 +53,18 @@ function(add_stage id)
       -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
       -P ${PROJECT_SOURCE_DIR}/cmake/RunAndCompare.cmake)
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels};pictures")
+
+  if(EXISTS ${dir}/expected/overlay)
+    add_test(NAME ${id}.overlay_pictures
+      COMMAND ${CMAKE_COMMAND}
+        -DPROGRAM=$<TARGET_FILE:${program}>
+        -DARGUMENTS=--overlay
+        -DCOMPARE=$<TARGET_FILE:compare_png>
+        -DEXPECTED=${dir}/expected/overlay
+        -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}_overlay
+        -P ${PROJECT_SOURCE_DIR}/cmake/RunAndCompare.cmake)
+    set_tests_properties(${id}.overlay_pictures PROPERTIES LABELS "${labels};pictures;overlay")
+  endif()
 endfunction()
 
 # <target>_engine (every .cpp of <dir> but main.cpp) and the program <target>_<name>

@@ -187,6 +187,15 @@ double pair_test_bound(const StepCost& step, const Options& options) {
 
 Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {
     document.canvas.setScale(options.scale);
+    overlay = options.overlay;
+}
+
+void press_key(PageScripts& scripts, Window& window, const Options& options, Key key) {
+    if (options.overlay_offered && key == kOverlayKey) {
+        window.overlay = !window.overlay;
+    } else {
+        scripts.onKeyDown(key);
+    }
 }
 
 int run(PageScripts& scripts, Window& window, const Options& options) {
@@ -226,7 +235,7 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         Recorder recorder(options, folder.staging());
         for (int k = 0; k < options.frames; ++k) {
             clock.advanceFrame();
-            for (const Key key : options.keys.pressesAt(k)) scripts.onKeyDown(key);
+            for (const Key key : options.keys.pressesAt(k)) press_key(scripts, window, options, key);
             scripts.onAnimationFrame();
             recorder.after_frame(k, document);
             stop_if_interrupted();

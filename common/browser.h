@@ -22,6 +22,10 @@ struct Window {
     explicit Window(const Options& options, Document page = Document());
     Document document;
     Clock clock;
+    // Whether the page draws its overlay (overlay_draw.h) this frame: set from --overlay,
+    // turned by kOverlayKey. The page reads it; the browser owns it, as it owns the
+    // clock, so the page's own scripts stay the book's.
+    bool overlay = false;
 };
 
 // What one fixed step of a page's world costs at most, for the run's budget: every
@@ -64,6 +68,10 @@ public:
     // the shapes its key presses make.
     virtual StepCost stepCost() const { return {}; }
 };
+
+// A key press reaching the page: on a stage with an overlay, kOverlayKey turns
+// window.overlay on or off; every other key goes to the page's onKeyDown.
+void press_key(PageScripts& scripts, Window& window, const Options& options, Key key);
 
 // Runs options.frames (>= 1) frames. Before frame k the clock advances by one frame,
 // the keys scripted for frame k are pressed, then the animation frame runs. The page is

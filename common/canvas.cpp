@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "page.h"  // draw_text, the page's font
+
 namespace browser {
 
 namespace {
@@ -314,12 +316,32 @@ void Canvas::strokeRect(double x, double y, double w, double h) {
     closed_ = std::move(closed);
 }
 
-void Canvas::save() { saved_.push_back({transform_, stroke_color_}); }
+void Canvas::fillRect(double x, double y, double w, double h) {
+    const double k = scale_;
+    const double left = k * (std::min(x, x + w) + transform_.e), right = k * (std::max(x, x + w) + transform_.e);
+    const double top = k * (std::min(y, y + h) + transform_.f), bottom = k * (std::max(y, y + h) + transform_.f);
+    const int i_end = end_pixel(right, pixels_.width), j_end = end_pixel(bottom, pixels_.height);
+    for (int j = first_pixel(top, pixels_.height); j < j_end; ++j) {
+        for (int i = first_pixel(left, pixels_.width); i < i_end; ++i) pixels_.set(i, j, fill_color_);
+    }
+}
+
+void Canvas::fillText(std::string_view text, double x, double y) {
+    const Point corner{scale_ * (x + transform_.e), scale_ * (y + transform_.f)};
+    // Far-off or NaN corners would not fit an int; such text could show nothing anyway.
+    constexpr double kReach = 1e6;
+    if (!(std::abs(corner.x) < kReach && std::abs(corner.y) < kReach)) return;
+    draw_text(pixels_, text, static_cast<int>(std::lround(corner.x)), static_cast<int>(std::lround(corner.y)),
+              fill_color_, scale_);
+}
+
+void Canvas::save() { saved_.push_back({transform_, stroke_color_, fill_color_}); }
 
 void Canvas::restore() {
     if (saved_.empty()) return;
     transform_ = saved_.back().transform;
     stroke_color_ = saved_.back().stroke_color;
+    fill_color_ = saved_.back().fill_color;
     saved_.pop_back();
 }
 

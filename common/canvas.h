@@ -3,6 +3,8 @@
 // moveTo / lineTo / arc, stroked with a 1 px anti-aliased line in the current
 // strokeStyle; strokeRect; clearRect; and a transform stack (save, restore,
 // translate, rotate) that applies to every point of a path when it is added.
+// Beyond the book, for the overlays that label what the engine computed: fillText and
+// fillRect in the current fillStyle.
 //
 // Coordinates are the canvas's: origin at the top-left corner, +x right, +y down,
 // one unit a pixel, pixel (i, j) covering [i, i+1) x [j, j+1) so its centre is at
@@ -16,6 +18,7 @@
 // large. At scale 1 every computation is the one without a scale (a product with 1.0
 // is exact), so pictures do not change by a bit.
 
+#include <string_view>
 #include <vector>
 
 #include "image.h"
@@ -46,6 +49,8 @@ public:
 
     void setStrokeStyle(Color c) { stroke_color_ = c; }
     Color strokeStyle() const { return stroke_color_; }
+    void setFillStyle(Color c) { fill_color_ = c; }
+    Color fillStyle() const { return fill_color_; }
 
     // Path building. Points pass through the current transform when added.
     void beginPath();
@@ -60,8 +65,14 @@ public:
 
     // Outline of the axis-aligned rectangle (x, y, w, h) in current coordinates.
     void strokeRect(double x, double y, double w, double h);
+    // The axis-aligned rectangle (x, y, w, h), filled. Its corners pass through the
+    // current transform's translation only (an overlay's boxes stay upright).
+    void fillRect(double x, double y, double w, double h);
+    // One line of text in the page's font (page.h's draw_text: letters about 14 units
+    // tall), its top-left corner at (x, y) after the current transform's translation.
+    void fillText(std::string_view text, double x, double y);
 
-    void save();     // pushes the transform and the stroke style
+    void save();     // pushes the transform and the stroke and fill styles
     void restore();  // pops them again; does nothing when nothing was saved
     void translate(double dx, double dy);
     void rotate(double radians);
@@ -74,12 +85,14 @@ private:
     struct State {  // what save() keeps: the transform and, as in the browser, the style
         Transform transform;
         Color stroke_color;
+        Color fill_color;
     };
     Point apply(double x, double y) const;  // canvas coordinates to device pixels
 
     int width_, height_, scale_;
     Image pixels_;
     Color stroke_color_ = colors::kBlack;
+    Color fill_color_ = colors::kBlack;
     Transform transform_;
     std::vector<State> saved_;
     std::vector<std::vector<Point>> subpaths_;

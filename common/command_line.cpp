@@ -88,11 +88,18 @@ bool gif_possible(bool gif_given, const std::string& program) {
     return false;
 }
 
+// The stage's key list, and the overlay key when it has an overlay.
+std::vector<KeyHelp> with_overlay_key(const StageDefaults& defaults) {
+    std::vector<KeyHelp> keys = defaults.key_help;
+    if (!defaults.overlay.empty()) keys.push_back({key_name(kOverlayKey), "overlay on / off (see --overlay)"});
+    return keys;
+}
+
 // The keys the stage declares, from its key list. A bad name there is the stage's
 // mistake, not the reader's.
 KeySet stage_keys(const StageDefaults& defaults) {
     KeySet keys;
-    for (const KeyHelp& line : defaults.key_help) {
+    for (const KeyHelp& line : with_overlay_key(defaults)) {
         try {
             keys.add(KeySet::parse(line.keys));
         } catch (const KeyScriptError& error) {
@@ -108,10 +115,11 @@ std::string help_footer(const StageDefaults& defaults) {
         "A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
         "a token without @ comes at the frame of the one before.";
     if (defaults.key_help.empty()) return footer + "\nKeys: a-z, 0-9, comma, up, down.";
+    const std::vector<KeyHelp> keys = with_overlay_key(defaults);
     std::size_t widest = 0;
-    for (const KeyHelp& line : defaults.key_help) widest = std::max(widest, line.keys.size());
+    for (const KeyHelp& line : keys) widest = std::max(widest, line.keys.size());
     footer += "\n\nThe keys of this stage, in a --keys script or live with --live:";
-    for (const KeyHelp& line : defaults.key_help) {
+    for (const KeyHelp& line : keys) {
         footer += "\n  " + line.keys + std::string(widest - line.keys.size() + 2, ' ') + line.meaning;
     }
     footer += "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
@@ -199,6 +207,10 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     app.add_option("--scale", scale_text, "draw the page K times larger (1 to 4), lines and text included,"
                                           " in the window and in the pictures")
         ->type_name("K")->capture_default_str();
+    bool overlay = false;
+    if (!defaults.overlay.empty()) {
+        app.add_flag("--overlay", overlay, "start with the overlay on: " + defaults.overlay);
+    }
     app.add_flag("--live", live, "play the page in a window, keys from the keyboard (Escape ends)");
     app.add_option("--record", record_text, "with --live: write the session's key presses to FILE as a key script"
                                              " and print the command that replays it")
@@ -228,7 +240,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         // CLI11 would read "--gif=false" as turning the flag on or off by its value; a
         // switch with a value is more likely a slip, and --no-gif says it plainly.
         for (const std::string& argument : arguments) {
-            for (const std::string_view flag : {"--gif=", "--no-gif=", "--live="}) {
+            for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay="}) {
                 if (argument.starts_with(flag)) {
                     throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
                                      in_quotes(argument) + ")");
@@ -306,6 +318,8 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
             if (app.count(name) > 0 && value.empty()) throw UsageError(name + ": must name a file (got \"\")");
         }
         options.extra = extra;
+        options.overlay_offered = !defaults.overlay.empty();
+        options.overlay = overlay;
         if (live) {
             options.live.on = true;
             options.live.record = record_text;
@@ -316,6 +330,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
                 {"--seed", seed_text}, {"--frame-ms", frame_ms_text}, {"--scale", scale_text}};
             for (const auto& [name, value] : extra) shaping.emplace_back(name, value);
             options.live.replay_command = replay_command(app, argc, argv, program, shaping);
+            if (overlay) options.live.replay_command.emplace_back("--overlay");
             // The stage's pictures; for a stage that saves none but final.png, one a half second.
             options.live.replay_every = defaults.every > 0 ? defaults.every : 30;
             options.live.replay_gif = !defaults.gif && gif_supported();

@@ -2,6 +2,7 @@
 // One command-line shape for every stage (CLI11):
 //   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS
 //   --gif  --no-gif  --gif-every N  --scale K  --live  --record FILE  --help
+// and, on a stage with an overlay (StageDefaults::overlay), --overlay and the key t
 // plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
 // list them in StageDefaults::extra_options and read their values from Options::extra.
 // CLI11 stays inside command_line.cpp, so stages never see it.
@@ -45,7 +46,14 @@ struct StageDefaults {
     // Every key the page's script reacts to: --help lists them, and a key script that
     // presses any other key is refused. Empty: any key may be pressed.
     std::vector<KeyHelp> key_help;
+    // What the stage's overlay draws, for --help ("" when it has none). A stage with one
+    // takes --overlay (the overlay on from the first frame) and the key kOverlayKey.
+    std::string overlay;
 };
+
+// The key that turns a stage's overlay on and off, live or in a key script; no stage
+// uses it for anything else.
+inline constexpr Key kOverlayKey = Key::T;
 
 // A --live session: the page in a window, played from the keyboard (live.h).
 struct LiveOptions {
@@ -78,6 +86,8 @@ struct Options {
     int scale = 1;       // device pixels per canvas pixel, along each axis (--scale)
     KeySet stage_keys;   // the keys the stage's page reacts to (empty: any)
     LiveOptions live;
+    bool overlay_offered = false;  // the stage has an overlay: kOverlayKey turns it on and off
+    bool overlay = false;          // --overlay: it is on from the first frame
     // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
     std::map<std::string, std::string> extra;
 };

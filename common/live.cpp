@@ -145,7 +145,7 @@ public:
 
 private:
     void press(int frame, Key key) {
-        scripts_.onKeyDown(key);
+        press_key(scripts_, window_, options_, key);
         recorded_.press(frame, key);
         ++presses_;
     }

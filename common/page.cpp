@@ -1,5 +1,6 @@
 #include "page.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string>
@@ -64,6 +65,19 @@ std::vector<std::string> wrap(std::string line, int max_width) {
     pieces.push_back(line);
     return pieces;
 }
+
+// Inside the legend box: a swatch of the entry's colour, then its text.
+constexpr int kSwatchSize = 12;
+constexpr int kSwatchGap = 6;
+constexpr Color kLegendBorder = colors::kGray;
+
+void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
+    for (int j = y0; j < y1; ++j) {
+        for (int i = x0; i < x1; ++i) picture.set(i, j, color);
+    }
+}
+
+void draw_legend(Image& page, const Document& document);
 
 }  // namespace
 
@@ -130,8 +144,37 @@ Image render_page(const Document& document) {
             y += kLineHeight;
         }
     }
+    draw_legend(page, document);
     return page;
 }
+
+namespace {
+
+// The legend covers the bottom of the echo panel (in chapter 4 the echo fills the panel,
+// and the canvas is the scene's): the key list hidden under it is still in --help, and
+// the overlay key brings it back.
+void draw_legend(Image& page, const Document& document) {
+    if (document.legend.empty()) return;
+    const int k = document.canvas.scale();
+    const int entries = static_cast<int>(document.legend.size());
+    const int left = document.canvas.width() + kPanelMargin / 2;
+    const int right = document.canvas.width() + kPanelWidth - kPanelMargin / 2;
+    const int bottom = document.canvas.height() - kPanelMargin / 2;
+    const int top = std::max(0, bottom - entries * kLineHeight - kPanelMargin);
+    fill(page, left * k, top * k, right * k, bottom * k, kLegendBorder);
+    fill(page, (left + 1) * k, (top + 1) * k, (right - 1) * k, (bottom - 1) * k, colors::kWhite);
+    int y = top + kPanelMargin / 2;
+    for (const LegendEntry& entry : document.legend) {
+        const int swatch_top = y + (kLineHeight - kSwatchSize) / 2 - 2;
+        fill(page, (left + kPanelMargin / 2) * k, swatch_top * k, (left + kPanelMargin / 2 + kSwatchSize) * k,
+             (swatch_top + kSwatchSize) * k, entry.color);
+        const int text_left = left + kPanelMargin / 2 + kSwatchSize + kSwatchGap;
+        draw_text(page, printable(entry.text), text_left * k, y * k, kTextColor, k);
+        y += kLineHeight;
+    }
+}
+
+}  // namespace
 
 Image with_status_line(const Image& page, std::string_view status, int scale) {
     const int band = (kLineHeight + kStatusPadding) * scale;

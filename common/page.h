@@ -4,20 +4,31 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "canvas.h"
 #include "image.h"
 
 namespace browser {
 
+// A line of an overlay's legend: the colour it draws something in, and what that is.
+struct LegendEntry {
+    Color color;
+    std::string text;
+};
+
 struct Document {
     Canvas canvas;        // <canvas id="canvas">
     std::string ui_echo;  // <div id="uiEchoString">: plain text, '\n' starts a new line
+    // What the overlay's colours mean (overlay_draw.h), boxed at the bottom of the echo
+    // panel; empty while the overlay is off.
+    std::vector<LegendEntry> legend;
 };
 
 inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
 
-// Composes the page: canvas with a thin frame, the echo panel beside it.
+// Composes the page: canvas with a thin frame, the echo panel beside it, and the
+// legend, when there is one, in a box at the panel's bottom (a swatch and a line each).
 // Size: (canvas width + kPanelWidth) x canvas height, times the canvas's scale: the
 // frame, the panel and its text are drawn that many times larger too, and the text is
 // wrapped where it is wrapped at scale 1.

@@ -1,0 +1,91 @@
+#include "overlay_draw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace browser::overlay {
+namespace {
+
+constexpr double kShortestArrow = 0.01;  // px
+constexpr double kSmallestSweep = 0.001; // rad
+
+// The two strokes of a head at `head` for a shaft pointing along `direction` (unit).
+void head_strokes(Canvas& canvas, Vec2 head, Vec2 direction, double length) {
+    for (const double side : {+kHeadAngle, -kHeadAngle}) {
+        const Vec2 back = direction.rotate(Vec2{}, side).scale(-length);
+        canvas.moveTo(head.x, head.y);
+        canvas.lineTo(head.x + back.x, head.y + back.y);
+    }
+}
+
+// Runs `draw` on a fresh path in `color` and strokes it, the canvas's styles kept.
+template <class Draw>
+void stroked(Canvas& canvas, Color color, Draw draw) {
+    canvas.save();
+    canvas.setStrokeStyle(color);
+    canvas.beginPath();
+    draw();
+    canvas.stroke();
+    canvas.beginPath();
+    canvas.restore();
+}
+
+}  // namespace
+
+void line(Canvas& canvas, Vec2 from, Vec2 to, Color color) {
+    stroked(canvas, color, [&] {
+        canvas.moveTo(from.x, from.y);
+        canvas.lineTo(to.x, to.y);
+    });
+}
+
+void arrow(Canvas& canvas, Vec2 tail, Vec2 head, Color color) {
+    const Vec2 shaft = head - tail;
+    const double length = shaft.length();
+    if (!(length >= kShortestArrow) || !std::isfinite(length)) return;
+    stroked(canvas, color, [&] {
+        canvas.moveTo(tail.x, tail.y);
+        canvas.lineTo(head.x, head.y);
+        head_strokes(canvas, head, shaft.scale(1.0 / length), std::min(kHeadLength, 0.4 * length));
+    });
+}
+
+void marker(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
+    stroked(canvas, color, [&] {
+        canvas.moveTo(at.x - kMarkerReach, at.y - kMarkerReach);
+        canvas.lineTo(at.x + kMarkerReach, at.y + kMarkerReach);
+        canvas.moveTo(at.x - kMarkerReach, at.y + kMarkerReach);
+        canvas.lineTo(at.x + kMarkerReach, at.y - kMarkerReach);
+    });
+    if (!text.empty()) label(canvas, at + kLabelOffset, color, text);
+}
+
+void ring(Canvas& canvas, Vec2 center, double radius, Color color) {
+    stroked(canvas, color, [&] {
+        canvas.moveTo(center.x + radius, center.y);
+        canvas.arc(center.x, center.y, radius, 0.0, 2.0 * std::numbers::pi);
+    });
+}
+
+void turn_arrow(Canvas& canvas, Vec2 center, double radius, double start, double sweep, Color color) {
+    if (!(std::abs(sweep) >= kSmallestSweep) || !std::isfinite(sweep) || !(radius > 0.0)) return;
+    const double end = start + sweep;
+    const Vec2 tip = center + Vec2(std::cos(end), std::sin(end)).scale(radius);
+    // Along the circle at the tip, in the direction of travel.
+    const Vec2 along = Vec2(-std::sin(end), std::cos(end)).scale(sweep > 0 ? 1.0 : -1.0);
+    stroked(canvas, color, [&] {
+        canvas.moveTo(center.x + radius * std::cos(start), center.y + radius * std::sin(start));
+        canvas.arc(center.x, center.y, radius, start, end, sweep < 0);
+        head_strokes(canvas, tip, along, std::min(kHeadLength, 0.4 * radius * std::abs(sweep)));
+    });
+}
+
+void label(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
+    canvas.save();
+    canvas.setFillStyle(color);
+    canvas.fillText(text, at.x, at.y);
+    canvas.restore();
+}
+
+}  // namespace browser::overlay

@@ -1,0 +1,46 @@
+#pragma once
+// The drawing words of the stages' overlays (--overlay, key t): what the engine computed
+// drawn over the page, in canvas coordinates, each in one colour that the page's legend
+// (page.h's Document::legend) names. Every word keeps the canvas's styles and transform
+// as it found them, so the page's own drawing after it is unchanged.
+
+#include <string_view>
+
+#include "canvas.h"
+#include "image.h"
+#include "vec2.h"
+
+namespace browser::overlay {
+
+// How big an arrow's head is: each of its two strokes is this long, or 40 % of the
+// arrow when that is shorter, and this far off the shaft's direction.
+inline constexpr double kHeadLength = 7.0;    // px
+inline constexpr double kHeadAngle = 0.45;    // rad, about 26 degrees
+
+// How far a marker's cross reaches each way from its point, and where its label goes.
+inline constexpr double kMarkerReach = 3.0;       // px
+inline constexpr Vec2 kLabelOffset{5.0, -16.0};   // px, from the point to the label's top-left
+
+// A straight line from `from` to `to` (a pair, a lever arm).
+void line(Canvas& canvas, Vec2 from, Vec2 to, Color color);
+
+// A straight arrow from `tail` to `head`. An arrow shorter than a hundredth of a pixel
+// has no direction and draws nothing.
+void arrow(Canvas& canvas, Vec2 tail, Vec2 head, Color color);
+
+// A cross at `at`, with `label` (one line; "" for none) just above to its right.
+void marker(Canvas& canvas, Vec2 at, Color color, std::string_view label = {});
+
+// A circle of `radius` around `center` (a bounding circle, a reach).
+void ring(Canvas& canvas, Vec2 center, double radius, Color color);
+
+// A curved arrow along the circle of `radius` around `center`, from the angle `start`
+// turning by `sweep` (rad; positive turns clockwise on screen, as angles do in canvas
+// coordinates), its head at the end: a spin, or a turn one impulse gives. A sweep under
+// a thousandth of a radian draws nothing.
+void turn_arrow(Canvas& canvas, Vec2 center, double radius, double start, double sweep, Color color);
+
+// A label with its top-left corner at `at`.
+void label(Canvas& canvas, Vec2 at, Color color, std::string_view text);
+
+}  // namespace browser::overlay
