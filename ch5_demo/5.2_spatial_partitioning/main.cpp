@@ -47,6 +47,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
+    .overlay = "the grid's cells, its candidate pairs, and the pair tests it saved",
 };
 
 class Page final : public browser::PageScripts {
