@@ -63,7 +63,7 @@ void drawContacts(browser::Canvas& canvas, const Core& core, std::vector<browser
     legend.push_back({kSideLineColor, "side lines of the reference face"});
     legend.push_back({kIncidentColor, "incident face, clipped by them"});
     legend.push_back({kPointColor, "contact point, with its depth"});
-    legend.push_back({kNormalColor, "normal push on 2nd shape, 1 px/unit"});
+    legend.push_back({kNormalColor, "normal push on 2nd shape, 2 units/px"});
     legend.push_back({kFrictionColor, "friction on the 2nd shape"});
     legend.push_back({kPointColor, std::to_string(solver.pointCount()) + " points, " +
                                        std::to_string(solver.persistedPointCount()) + " warm started"});

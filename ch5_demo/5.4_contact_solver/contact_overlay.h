@@ -17,8 +17,8 @@
 namespace engine {
 
 // How long a force's arrow is: px per unit of force (mass x px/s^2). A box of mass 1
-// resting on the floor under the demo's gravity of 20 px/s^2 gets 20 px in all.
-inline constexpr double kPxPerForce = 1.0;
+// resting on the floor under the demo's gravity of 20 px/s^2 gets 10 px in all.
+inline constexpr double kPxPerForce = 0.5;
 
 void drawContacts(browser::Canvas& canvas, const Core& core, std::vector<browser::LegendEntry>& legend);
 
