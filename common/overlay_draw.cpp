@@ -1,5 +1,7 @@
 #include "overlay_draw.h"
 
+#include "page.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -86,6 +88,22 @@ void label(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
     canvas.setFillStyle(color);
     canvas.fillText(text, at.x, at.y);
     canvas.restore();
+}
+
+void LabelLayout::place(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
+    const double width = text_width(text), height = text_line_height();
+    Box box{at.x, at.y, at.x + width, at.y + height};
+    const auto overlaps = [&box](const Box& other) {
+        return box.left < other.right && other.left < box.right && box.top < other.bottom && other.top < box.bottom;
+    };
+    // Each move clears at least the box it overlapped, so this ends within placed_.size() moves.
+    for (auto crossed = std::find_if(placed_.begin(), placed_.end(), overlaps); crossed != placed_.end();
+         crossed = std::find_if(placed_.begin(), placed_.end(), overlaps)) {
+        box.top = crossed->bottom;
+        box.bottom = box.top + height;
+    }
+    placed_.push_back(box);
+    label(canvas, {box.left, box.top}, color, text);
 }
 
 }  // namespace browser::overlay

@@ -5,6 +5,7 @@
 // as it found them, so the page's own drawing after it is unchanged.
 
 #include <string_view>
+#include <vector>
 
 #include "canvas.h"
 #include "image.h"
@@ -42,5 +43,19 @@ void turn_arrow(Canvas& canvas, Vec2 center, double radius, double start, double
 
 // A label with its top-left corner at `at`.
 void label(Canvas& canvas, Vec2 at, Color color, std::string_view text);
+
+// Labels that must stay readable where what they label crowds together (a pile of
+// shapes): each goes where it is asked to, or as many lines lower as it takes to clear
+// the labels placed before it. One layout a frame.
+class LabelLayout {
+public:
+    void place(Canvas& canvas, Vec2 at, Color color, std::string_view text);
+
+private:
+    struct Box {
+        double left, top, right, bottom;
+    };
+    std::vector<Box> placed_;
+};
 
 }  // namespace browser::overlay

@@ -41,9 +41,6 @@ std::string printable(std::string_view line) {
     return text;
 }
 
-int text_width(std::string text) {  // a copy: the font's functions take a mutable char*
-    return stb_easy_font_width(text.data()) * kTextScale;
-}
 
 // Splits one line of text into pieces at most max_width pixels wide, breaking after the
 // last space that fits, or inside a word too long to fit at all. Continued pieces are
@@ -80,6 +77,14 @@ void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
 void draw_legend(Image& page, const Document& document);
 
 }  // namespace
+
+int text_width(std::string_view line) {
+    std::string text = printable(line);  // a copy: the font's functions take a mutable char*
+    stb_easy_font_spacing(kLetterSpacing);
+    return stb_easy_font_width(text.data()) * kTextScale;
+}
+
+int text_line_height() { return kLineHeight; }
 
 // The font hands back quads (four corners each, x y z floats then 4 colour bytes);
 // with kTextScale whole, every quad covers whole pixels, so each is a plain rectangle

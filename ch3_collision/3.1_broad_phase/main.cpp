@@ -26,6 +26,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
+    .overlay = "the bounding circles, and each pair the broad phase passed with its test",
 };
 
 class Page final : public browser::PageScripts {

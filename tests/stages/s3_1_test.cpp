@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "book_scene.h"
@@ -104,4 +105,35 @@ TEST_CASE("s3_1: a reset in a frame that runs no update draws no removed shape")
     page.press(Key::R);
     page.frame();
     CHECK(page.core.objectCount() == 5);
+}
+
+TEST_CASE("s3_1: the overlay joins each pair the broad phase passed, and rings each rectangle's bounding circle") {
+    test::StageFixture page;
+    test::buildBookScene(page.core, page.random);
+    // Two circles of radius 15 whose centres are 25 apart (25 <= 30: they pass), on the
+    // row of pixel centres y = 100.5; a 30 x 40 rectangle alone, bounding radius
+    // sqrt(15^2 + 20^2) = 25.
+    page.core.add(engine::Circle({100.5, 100.5}, 15));       // 5
+    page.core.add(engine::Circle({125.5, 100.5}, 15));       // 6
+    page.core.add(engine::Rectangle({300.5, 300.5}, 30, 40)); // 7
+    page.frame();
+    const browser::Image& off = page.window.document.canvas.pixels();
+    CHECK(off.at(103, 100) == browser::colors::kWhite);  // off by default: the book's picture
+    CHECK(off.at(325, 300) == browser::colors::kWhite);
+    CHECK(page.window.document.legend.empty());
+
+    page.window.overlay = true;
+    page.frame();
+    const browser::Image& on = page.window.document.canvas.pixels();
+    // (103.5, 100.5) is on the line between the centres and 12 px from circle 5's outline
+    // (at x = 85.5 and 115.5) and circle 6's (110.5): the pair's purple, fully.
+    CHECK(on.at(103, 100) == browser::Color{160, 0, 200, 255});
+    // The ring of radius 25 about (300.5, 300.5) passes through the centre of pixel
+    // (325, 300), 10 px right of the rectangle's side: gray, to a few levels.
+    CHECK(on.at(325, 300).r == on.at(325, 300).b);
+    CHECK(std::abs(on.at(325, 300).r - 150) <= 4);
+    // Three tested shapes make three pairs; one passed.
+    const auto& legend = page.window.document.legend;
+    REQUIRE(legend.size() == 3);
+    CHECK(legend[2].text == "1 of 3 pairs passed");
 }

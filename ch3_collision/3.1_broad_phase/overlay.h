@@ -1,0 +1,20 @@
+#pragma once
+// The stage's overlay (--overlay, or the key t live and in key scripts): what the
+// engine computed this frame, drawn over the book's picture, with a legend at the
+// bottom of the echo panel that names each colour. The book's pictures stay the book's:
+// with the overlay off nothing here draws.
+//
+// This stage computes the broad phase, so its overlay shows the bounding circles the
+// pass compares and the pairs it passed, each joined centre to centre and labelled with
+// the two numbers the test compares: the centres' distance and the sum of the radii.
+
+#include "browser.h"
+#include "core.h"
+
+namespace engine {
+
+// While window.overlay is on, draws the overlay onto the canvas and sets the legend;
+// while it is off, takes the legend away. Called last in a frame, over everything.
+void drawOverlay(browser::Window& window, const Core& core);
+
+}  // namespace engine
