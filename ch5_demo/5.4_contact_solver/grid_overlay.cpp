@@ -66,7 +66,7 @@ void drawGrid(browser::Canvas& canvas, const Core& core, std::vector<browser::Le
     legend.push_back({kCellColor, "grid cell, " + std::to_string(std::lround(size)) + " px"});
     legend.push_back({kCoveredColor, "cell a shape's widened box reaches"});
     legend.push_back({kCandidateColor, "candidate pair (oversize: not drawn)"});
-    legend.push_back({kCandidateColor, "a pass tests " + std::to_string(listed) + " pairs, not " +
+    legend.push_back({kCandidateColor, "pair tests a pass: " + std::to_string(listed) + ", not " +
                                            std::to_string(every_pair) + ": " +
                                            std::to_string(every_pair - listed) + " saved"});
 }
