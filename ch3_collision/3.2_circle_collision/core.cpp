@@ -3,6 +3,7 @@
 #include <string>
 
 #include "number_format.h"
+#include "overlay.h"
 
 namespace engine {
 
@@ -38,13 +39,14 @@ void Core::keepFirstObjects(std::size_t count) {
 // updates that are due, so each picture shows the state from before that frame's
 // updates. The book's pass draws each collision onto that picture as it finds it; ours
 // records them, and the frame draws what the last pass found once the updates are
-// done. A frame that ran no pass adds nothing.
+// done. A frame that ran no pass adds nothing. Last, over everything, the overlay.
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
     const int due = timer_.updatesDue(window_.clock.nowMs());
     for (int k = 0; k < due; ++k) update();
     if (due > 0) physics_.drawCollisions(window_.document.canvas);
+    drawOverlay(window_, *this);
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.

@@ -48,6 +48,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
+    .overlay = "the collision info, and each moving shape's velocity and spin",
 };
 
 class Page final : public browser::PageScripts {

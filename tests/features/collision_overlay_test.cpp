@@ -1,0 +1,55 @@
+// The overlay of the collision info (3.2 on; from 4.3 on the book no longer draws it):
+// markers at the start and the end of the overlap and the normal drawn from the start,
+// each in the colour the legend gives it, where the geometry of two circles puts them.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+#include "circle.h"
+#include "stage_fixture.h"
+
+#if __has_include("world_settings.h")
+// Chapter 4: static circles, which neither fall, nor get pushed apart, nor bounce.
+#define STATIC_CIRCLE , engine::PhysicalAttributes{.mass = 0.0}
+#else
+#define STATIC_CIRCLE
+#endif
+
+namespace {
+
+// The colour of the legend line that starts with `prefix`.
+browser::Color legendColor(const browser::Document& document, const std::string& prefix) {
+    for (const browser::LegendEntry& entry : document.legend) {
+        if (entry.text.rfind(prefix, 0) == 0) return entry.color;
+    }
+    FAIL("no legend line starts with \"" << prefix << "\"");
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in the legend's colours") {
+    test::StageFixture page;
+    // Radius 20, centres 30 apart on the row of pixel centres y = 100.5: they overlap by
+    // 40 - 30 = 10 px along the normal (1, 0), from the second circle's leftmost point
+    // (210.5, 100.5) to the first one's rightmost (220.5, 100.5).
+    page.core.add(engine::Circle({200.5, 100.5}, 20 STATIC_CIRCLE));
+    page.core.add(engine::Circle({230.5, 100.5}, 20 STATIC_CIRCLE));
+    page.window.overlay = true;
+    page.frame();
+    const browser::Document& document = page.window.document;
+    const browser::Image& pixels = document.canvas.pixels();
+    // The markers' crosses meet on those pixel centres, and they are drawn last.
+    CHECK(pixels.at(210, 100) == legendColor(document, "start"));
+    CHECK(pixels.at(220, 100) == legendColor(document, "end"));
+    // The normal runs 20 px right from the start along the row: (213.5, 100.5) is on it,
+    // 2 px or more from each marker's strokes and inside both circles.
+    CHECK(pixels.at(213, 100) == legendColor(document, "normal"));
+    // It ends at x = 230.5: two pixels on, the row is white.
+    CHECK(pixels.at(232, 100) == browser::colors::kWhite);
+    const auto counted = std::find_if(document.legend.begin(), document.legend.end(), [](const auto& entry) {
+        return entry.text == "colliding pairs: 1";
+    });
+    CHECK(counted != document.legend.end());
+}

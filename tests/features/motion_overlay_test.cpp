@@ -1,0 +1,50 @@
+// The overlay of motion (4.1 on): each moving shape's velocity as an arrow from its
+// centre to where it would be in half a second, and its angular velocity as a curved
+// arrow round it, turning as far as the shape turns in half a second.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "circle.h"
+#include "stage_fixture.h"
+
+namespace {
+
+browser::Color legendColor(const browser::Document& document, const std::string& prefix) {
+    for (const browser::LegendEntry& entry : document.legend) {
+        if (entry.text.rfind(prefix, 0) == 0) return entry.color;
+    }
+    FAIL("no legend line starts with \"" << prefix << "\"");
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as far as half a second turns") {
+    test::StageFixture page;  // the book's world: movement off, so nothing moves
+    engine::Circle& ball = page.core.add(engine::Circle({300.5, 200.5}, 10));
+    ball.setVelocity({60, 0});     // 30 px in 0.5 s: the tip at (330.5, 200.5)
+    ball.setAngularVelocity(2.0);  // 1 rad in 0.5 s
+    page.window.overlay = true;
+    page.frame();
+    const browser::Document& document = page.window.document;
+    const browser::Image& pixels = document.canvas.pixels();
+    const browser::Color velocity = legendColor(document, "velocity");
+    // On the shaft, 9.5 px outside the circle and 10 px before the tip: fully covered.
+    CHECK(pixels.at(320, 200) == velocity);
+    // Past the tip, nothing.
+    CHECK(pixels.at(333, 200) == browser::colors::kWhite);
+    // The spin's arc: radius 10 + 4 px, from straight up (-pi/2) clockwise by 1 rad.
+    // Halfway, at -pi/2 + 0.5, it passes (307.21, 188.22): that pixel is mostly the
+    // velocity colour. The same radius a quarter turn before the start is untouched.
+    const auto on_arc = [](double angle) {
+        return browser::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
+    };
+    const browser::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
+    const browser::Color arc = pixels.at(static_cast<int>(middle.x), static_cast<int>(middle.y));
+    CHECK(arc.g < 200);  // white would be 255 in each channel
+    CHECK(arc.r < 200);
+    const browser::Vec2 before = on_arc(-std::acos(-1.0));
+    CHECK(pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)) == browser::colors::kWhite);
+}
