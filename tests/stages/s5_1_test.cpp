@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -225,4 +227,45 @@ TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
     };
     CHECK(u16(6) == 800 + browser::kPanelWidth);
     CHECK(u16(8) == 450);
+}
+
+TEST_CASE("s5_1: the README's key script makes three boxes and three balls at once, and H at two seconds kicks every moving shape") {
+    // README.md, "Play it live": --keys "f*3 g*3 h@120" --frames 240. The presses of
+    // frame 0 come before its update, so step 1 has six more shapes than step 0: three
+    // rectangles, then three circles. H before frame 120 gives every moving shape a
+    // velocity uniform in the square [-250, 250)^2 px/s, whose mean length is
+    // 250 (sqrt 2 + ln(1 + sqrt 2)) / 3 = 191 px/s; one step of gravity and collisions
+    // later the shapes still move about that fast, where a step before they had settled.
+    test::ScratchFolder folder("s5_1_readme_script");
+    const std::filesystem::path dump = folder.path / "dump.csv";
+    const test::ProgramRun run = test::runStageProgram(
+        folder, "--keys \"f*3 g*3 h@120\" --frames 240 --every 0 --no-gif --out " +
+                    test::quoted(folder.path / "out") + " --dump " + test::quoted(dump));
+    REQUIRE(run.status == 0);
+    const std::vector<test::DumpRow> rows = test::readDump(dump);
+    const auto at = [&](long step) {
+        std::vector<test::DumpRow> found;
+        std::copy_if(rows.begin(), rows.end(), std::back_inserter(found),
+                     [&](const test::DumpRow& row) { return row.step == step; });
+        return found;
+    };
+    const std::vector<test::DumpRow> start = at(0), first = at(1);
+    REQUIRE(first.size() == start.size() + 6);
+    for (std::size_t k = 0; k < 6; ++k) CHECK(first[start.size() + k].shape == (k < 3 ? "rectangle" : "circle"));
+
+    const auto meanSpeed = [](const std::vector<test::DumpRow>& state) {
+        double sum = 0.0;
+        int moving = 0;
+        for (const test::DumpRow& row : state) {
+            const double speed = std::hypot(row.vx, row.vy);
+            if (speed == 0.0) continue;  // a static shape
+            sum += speed;
+            ++moving;
+        }
+        return moving > 0 ? sum / moving : 0.0;
+    };
+    const double before = meanSpeed(at(120)), after = meanSpeed(at(121));
+    INFO("mean speed before H " << before << " px/s, after " << after << " px/s");
+    CHECK(after > 3 * before);
+    CHECK_THAT(after, test::near(250 * (std::sqrt(2.0) + std::log(1 + std::sqrt(2.0))) / 3, 60));
 }
