@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 #include "rectangle.h"
 
@@ -55,14 +54,14 @@ void drawContacts(browser::Canvas& canvas, const Core& core, std::vector<browser
             const Vec2 at = point.contact.position;
             draw::arrow(canvas, at, at + contact.normal * (point.normal_impulse / dt * kPxPerForce), kNormalColor);
             draw::arrow(canvas, at, at + contact.tangent * (point.tangent_impulse / dt * kPxPerForce), kFrictionColor);
-            draw::marker(canvas, at, kPointColor, browser::to_precision(point.contact.depth, 2));
+            draw::marker(canvas, at, kPointColor);
         }
     }
     const ContactSolver& solver = core.physics().contactSolver();
     legend.push_back({kReferenceColor, "reference face; normal = the axis"});
     legend.push_back({kSideLineColor, "side lines of the reference face"});
     legend.push_back({kIncidentColor, "incident face, clipped by them"});
-    legend.push_back({kPointColor, "contact point, with its depth"});
+    legend.push_back({kPointColor, "contact point"});
     legend.push_back({kNormalColor, "normal push on 2nd shape, 2 units/px"});
     legend.push_back({kFrictionColor, "friction on the 2nd shape"});
     legend.push_back({kPointColor, std::to_string(solver.pointCount()) + " points, " +

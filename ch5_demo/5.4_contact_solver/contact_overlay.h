@@ -4,7 +4,8 @@
 //  - For two rectangles, the reference face (whose normal the separating axis test
 //    chose), its two side lines, and the incident face they clip: what is left of the
 //    incident face between the side lines, behind the reference face, gives the points.
-//  - Each contact point, with its depth.
+//  - Each contact point (the pair's depth is the book's collision info's, drawn by
+//    the layer under this one).
 //  - The totals each point ended the step with, as forces on the second shape (the
 //    impulse over the step's dt): the normal push and the friction along the tangent.
 // With the book's solver it draws nothing: that solver keeps no contacts.

@@ -474,8 +474,8 @@ TEST_CASE("s5_4: a resting column's contact points are found again, by their key
 // What the overlay draws (contact_overlay.h): the solver's own contacts
 
 TEST_CASE("s5_4: the overlay's faces and totals: the platform's top face is the reference, and a resting box's pushes add up to its weight") {
-    // The right-hand box of clipping.json, here let rest on its platform: 80 x 40, on a
-    // platform whose top face (y = 140) ends at x = 280 while the box spans 210 to 290. The contact's points are
+    // A box hanging over a platform's end, as in clipping.json but at rest: 80 x 40, on
+    // a platform whose top face (y = 140) ends at x = 280 while the box spans 210 to 290. The contact's points are
     // the box's bottom-left corner and the cut by the platform's side line x = 280; the
     // reference face is the platform's top (normal (0, -1)), the incident face the box's
     // bottom (normal (0, 1)). At rest the step's normal totals hold the box's weight over
