@@ -5,6 +5,7 @@
 #   <id>_<name>        program: main.cpp, the stage's index.html
 #   <id>_tests         tests/features/<feature>_test.cpp for each listed feature, compiled
 #                      against this folder's headers, plus tests/stages/<id>_test.cpp
+#                      (only when Catch2 was found: PHYSICS_TESTS)
 #   <id>               builds the three above: `cmake --build build --target <id>`
 # and registers with CTest, all labelled <id> and <chN>:
 #   <id>.<feature>     one test per feature file, also labelled <feature>
@@ -27,22 +28,25 @@ function(add_stage id)
   stage_engine_and_program(${id} ${dir} ${STAGE_PROGRAM})
   set(program ${id}_${STAGE_PROGRAM})
 
-  stage_test_sources(test_sources ${id} ${STAGE_FEATURES})
-  add_executable(${id}_tests ${test_sources})
-  stage_test_program(${id}_tests ${id} ${id}_engine ${program})
-  # Every test file includes Catch2's 17,000-line header: parse it once per executable.
-  target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
-
-  add_custom_target(${id} DEPENDS ${program} ${id}_tests)
-
   set(labels ${id} ${STAGE_CHAPTER})
-  foreach(feature IN LISTS STAGE_FEATURES)
-    add_test(NAME ${id}.${feature} COMMAND ${id}_tests "-#" "[#${feature}_test]")
-    set_tests_properties(${id}.${feature} PROPERTIES LABELS "${labels};${feature}")
-  endforeach()
-  if(EXISTS ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
-    add_test(NAME ${id}.stage COMMAND ${id}_tests "-#" "[#${id}_test]")
-    set_tests_properties(${id}.stage PROPERTIES LABELS "${labels};stage")
+  if(PHYSICS_TESTS)  # Catch2 found (top-level CMakeLists.txt)
+    stage_test_sources(test_sources ${id} ${STAGE_FEATURES})
+    add_executable(${id}_tests ${test_sources})
+    stage_test_program(${id}_tests ${id} ${id}_engine ${program})
+    # Every test file includes Catch2's 17,000-line header: parse it once per executable.
+    target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
+    add_custom_target(${id} DEPENDS ${program} ${id}_tests)
+
+    foreach(feature IN LISTS STAGE_FEATURES)
+      add_test(NAME ${id}.${feature} COMMAND ${id}_tests "-#" "[#${feature}_test]")
+      set_tests_properties(${id}.${feature} PROPERTIES LABELS "${labels};${feature}")
+    endforeach()
+    if(EXISTS ${PROJECT_SOURCE_DIR}/tests/stages/${id}_test.cpp)
+      add_test(NAME ${id}.stage COMMAND ${id}_tests "-#" "[#${id}_test]")
+      set_tests_properties(${id}.stage PROPERTIES LABELS "${labels};stage")
+    endif()
+  else()
+    add_custom_target(${id} DEPENDS ${program})
   endif()
 
   add_test(NAME ${id}.pictures

@@ -84,7 +84,7 @@ void press_key(PageScripts& scripts, Window& window, const Options& options, Key
 // leaves a half-written folder.
 // Returns the exit status: 0; 1 with a one-line message on stderr when the pictures
 // cannot be written; 2 with one line, before anything is written, when the run is
-// refused: options.gif asks for a GIF that this build cannot write (gif_writer.h's
+// refused: options.gif asks for a GIF that this build cannot write (build_features.h's
 // kNoGifSupport), options.out_dir may not be replaced (output_folder.h), or the run
 // would go over its budget (kMaxDevicePixels, kMaxPixelsDrawn, kMaxPairTests).
 // SIGINT and SIGTERM end a run after the frame they come in, with the staging folder

@@ -11,8 +11,7 @@
 #include <string_view>
 
 #include "canvas.h"
-#include "gif_writer.h"
-#include "live_window.h"
+#include "build_features.h"
 #include "random.h"
 #include "strict_parse.h"
 
@@ -159,184 +158,220 @@ std::string program_name(int argc, const char* const* argv, const StageDefaults&
     return name.empty() ? defaults.id : name;
 }
 
-}  // namespace
+// What the reader typed, option by option. Every value is read as text and checked
+// afterwards, so each bad value gets a message in our words, naming the option and
+// quoting what the reader typed.
+struct OptionTexts {
+    explicit OptionTexts(const StageDefaults& defaults)
+        : out((std::filesystem::path("out") / defaults.id).string()),
+          frames(std::to_string(defaults.frames)),
+          every(std::to_string(defaults.every)),
+          gif_every(std::to_string(defaults.gif_every)),
+          seed(std::to_string(Random::kDefaultSeed)),
+          keys(defaults.keys) {
+        // Bound to the table before parsing; std::map keeps references to its values
+        // valid as it grows.
+        for (const ExtraOption& option : defaults.extra_options) extra.emplace(option.name, option.default_value);
+    }
+    std::string out, frames, every, gif_every, seed, keys;
+    std::string frame_ms;  // read only when given, so the default stays exactly 1000/60
+    std::string scale = "1";
+    bool gif = false, no_gif = false, live = false, overlay = false;  // switches: no value to check
+    std::string record, live_events, live_screenshot;
+    std::map<std::string, std::string> extra;  // the stage's own options, by name
+};
 
-ParsedCommandLine parse_command_line(int argc, const char* const* argv, const StageDefaults& defaults) {
-    const std::string program = program_name(argc, argv, defaults);
-
-    // Every value is read as text and checked below, so each bad value gets a message
-    // in our words, naming the option and quoting what the reader typed.
-    std::string out_text = (std::filesystem::path("out") / defaults.id).string();
-    std::string frames_text = std::to_string(defaults.frames);
-    std::string every_text = std::to_string(defaults.every);
-    bool gif_flag = false, no_gif_flag = false;  // switches: no value to check
-    std::string gif_every_text = std::to_string(defaults.gif_every);
-    std::string seed_text = std::to_string(Random::kDefaultSeed);
-    std::string keys_text = defaults.keys;
+// The option table: the common options and the stage's own, each bound to its text.
+void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& defaults) {
     std::ostringstream default_frame_ms;
     default_frame_ms << 1000.0 / 60.0;
-    std::string frame_ms_text;  // read only when given, so the default stays exactly 1000/60
-
-    std::string scale_text = "1";
-    bool live = false;
-    std::string record_text, live_events_text, live_screenshot_text;
-    const KeySet keys_of_stage = stage_keys(defaults);
-
-    CLI::App app(defaults.title, program);
-    app.footer(help_footer(defaults));
-    // Unknown words stay in app.remaining() so we can name them ourselves.
-    app.allow_extras();
-    app.add_option("--out", out_text, "folder for the pictures (replaced by each run)")
+    app.add_option("--out", texts.out, "folder for the pictures (replaced by each run)")
         ->type_name("DIR")->capture_default_str();
-    app.add_option("--frames", frames_text, "how many animation frames to run")
+    app.add_option("--frames", texts.frames, "how many animation frames to run")
         ->type_name("N")->capture_default_str();
-    app.add_option("--every", every_text,
+    app.add_option("--every", texts.every,
                    "also save every K-th frame as frame_NNNN.png, and all of them small on contact_sheet.png"
                    " (0: only final.png)")
         ->type_name("K")->capture_default_str();
-    app.add_flag("--gif", gif_flag, "also write animation.gif, the page every N-th frame (see --gif-every)");
-    app.add_flag("--no-gif", no_gif_flag, "write no animation.gif, even where the stage writes one by default");
-    app.add_option("--gif-every", gif_every_text, "a GIF picture after frames 0, N, 2N, ...; each shows N frames' time")
+    app.add_flag("--gif", texts.gif, "also write animation.gif, the page every N-th frame (see --gif-every)");
+    app.add_flag("--no-gif", texts.no_gif, "write no animation.gif, even where the stage writes one by default");
+    app.add_option("--gif-every", texts.gif_every, "a GIF picture after frames 0, N, 2N, ...; each shows N frames' time")
         ->type_name("N")->capture_default_str();
-    app.add_option("--seed", seed_text, "seed of the random numbers")
+    app.add_option("--seed", texts.seed, "seed of the random numbers")
         ->type_name("S")->capture_default_str();
-    app.add_option("--keys", keys_text, "key presses, e.g. \"f*3 g@10 up e*5@20\"")
+    app.add_option("--keys", texts.keys, "key presses, e.g. \"f*3 g@10 up e*5@20\"")
         ->type_name("SCRIPT")->capture_default_str();
-    app.add_option("--frame-ms", frame_ms_text, "simulated milliseconds per frame")
+    app.add_option("--frame-ms", texts.frame_ms, "simulated milliseconds per frame")
         ->type_name("MS")->default_str(default_frame_ms.str());
-    app.add_option("--scale", scale_text, "draw the page K times larger (1 to 4), lines and text included,"
-                                          " in the window and in the pictures")
+    app.add_option("--scale", texts.scale, "draw the page K times larger (1 to 4), lines and text included,"
+                                           " in the window and in the pictures")
         ->type_name("K")->capture_default_str();
-    bool overlay = false;
     if (!defaults.overlay.empty()) {
-        app.add_flag("--overlay", overlay, "start with the overlay on: " + defaults.overlay);
+        app.add_flag("--overlay", texts.overlay, "start with the overlay on: " + defaults.overlay);
     }
-    app.add_flag("--live", live, "play the page in a window, keys from the keyboard (Escape ends)");
-    app.add_option("--record", record_text, "with --live: write the session's key presses to FILE as a key script"
-                                             " and print the command that replays it")
+    app.add_flag("--live", texts.live, "play the page in a window, keys from the keyboard (Escape ends)");
+    app.add_option("--record", texts.record, "with --live: write the session's key presses to FILE as a key script"
+                                              " and print the command that replays it")
         ->type_name("FILE");
     // Test hooks, hidden from --help (an empty group): see live_window.h.
-    app.add_option("--live-events", live_events_text)->group("");
-    app.add_option("--live-screenshot", live_screenshot_text)->group("");
+    app.add_option("--live-events", texts.live_events)->group("");
+    app.add_option("--live-screenshot", texts.live_screenshot)->group("");
 
-    // Bound before parsing; std::map keeps references to its values valid as it grows.
-    std::map<std::string, std::string> extra;
     for (const ExtraOption& option : defaults.extra_options) {
-        auto [slot, added] = extra.emplace(option.name, option.default_value);
         try {
-            if (!added) throw CLI::OptionAlreadyAdded(option.name);
-            app.add_option(option.name, slot->second, option.help)
+            // CLI11 refuses a name that is already in the table: given twice, or a common one.
+            app.add_option(option.name, texts.extra.at(option.name), option.help)
                 ->type_name(option.value_name)->capture_default_str();
         } catch (const CLI::ConstructionError& error) {
             // A mistake in the stage's code, not in what the reader typed.
             throw std::logic_error("extra option " + in_quotes(option.name) + ": " + one_line(error.what()));
         }
     }
+}
+
+// CLI11 would read "--gif=false" as turning the flag on or off by its value; a switch
+// with a value is more likely a slip, and --no-gif says it plainly.
+void refuse_switch_values(const std::vector<std::string>& arguments) {
+    for (const std::string& argument : arguments) {
+        for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay="}) {
+            if (argument.starts_with(flag)) {
+                throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
+                                 in_quotes(argument) + ")");
+            }
+        }
+    }
+}
+
+// --live and the options that only go with it.
+void check_live_switches(const CLI::App& app, const OptionTexts& texts) {
+    if (texts.live) {
+        refuse_picture_options_when_live(app);
+        if (!live_window_supported()) throw UsageError(std::string(kNoLiveSupport));
+    }
+    for (const char* name : {"--record", "--live-events", "--live-screenshot"}) {
+        if (!texts.live && app.count(name) > 0) throw UsageError(std::string(name) + ": only with --live");
+    }
+    for (const auto& [name, text] : {std::pair<const char*, const std::string&>{"--record", texts.record},
+                                     {"--live-events", texts.live_events},
+                                     {"--live-screenshot", texts.live_screenshot}}) {
+        if (app.count(name) > 0 && text.empty()) throw UsageError(std::string(name) + ": must name a file (got \"\")");
+    }
+}
+
+// The options that shape the pictures: their folder, size, how many and which, and
+// whether a GIF is wanted (returned; whether this build can write it is asked last).
+bool read_picture_options(const CLI::App& app, const OptionTexts& texts, const StageDefaults& defaults,
+                          Options& options) {
+    options.scale = int_option("--scale", texts.scale, 1, Canvas::kMaxScale);
+    options.out_dir = texts.out;
+    if (texts.out.empty()) throw UsageError("--out: must name a folder (got \"\")");
+    options.frames = int_option("--frames", texts.frames, 1, KeyScript::kMaxFrame);
+    options.every = int_option("--every", texts.every, 0, KeyScript::kMaxFrame);
+    const bool want_gif = gif_wanted(texts.gif, texts.no_gif, defaults.gif);
+    if (options.every > 0 && frames_saved(options.frames, options.every) > kMostPictures) {
+        throw UsageError("--every: " + std::to_string(options.frames) + " frames would save " +
+                         std::to_string(frames_saved(options.frames, options.every)) + " pictures, more than the " +
+                         std::to_string(kMostPictures) + " a run may (a larger --every, or fewer --frames)");
+    }
+    options.gif_every = int_option("--gif-every", texts.gif_every, 1, KeyScript::kMaxFrame);
+    if (app.count("--gif-every") > 0 && !want_gif) {
+        throw UsageError("--gif-every: there is no GIF to space out (add --gif)");
+    }
+    if (want_gif && !texts.live && frames_saved(options.frames, options.gif_every) > kMostPictures) {
+        throw UsageError("--gif-every: " + std::to_string(options.frames) + " frames would make a GIF of " +
+                         std::to_string(frames_saved(options.frames, options.gif_every)) +
+                         " pictures, more than the " + std::to_string(kMostPictures) +
+                         " a run may (a larger --gif-every, fewer --frames, or --no-gif)");
+    }
+    return want_gif;
+}
+
+// The key script: well formed, only the stage's keys, and no press after the last frame.
+void read_key_options(const CLI::App& app, const OptionTexts& texts, const KeySet& keys_of_stage,
+                      Options& options) {
+    try {
+        options.keys = KeyScript::parse(texts.keys);
+    } catch (const KeyScriptError& error) {
+        throw UsageError(std::string("--keys: ") + error.what());
+    }
+    options.stage_keys = keys_of_stage;
+    if (!options.stage_keys.empty()) {
+        if (const auto stray = options.keys.firstKeyOutside(options.stage_keys)) {
+            throw UsageError("--keys: " + in_quotes(key_name(*stray)) + " is not a key of this stage (its keys: " +
+                             options.stage_keys.text() + ")");
+        }
+    }
+    options.keys_text = texts.keys;
+    options.keys_given = app.count("--keys") > 0;
+    // A live session starts from the page as it loads; the reader plays it, after any
+    // presses of their own --keys script.
+    if (texts.live && !options.keys_given) options.keys = KeyScript();
+    // A press of the reader's own after the last frame would silently do nothing, which
+    // hides a mistake. The default script may run past a shorter --frames: asking for
+    // fewer frames than the demo needs is a fair request.
+    if (!texts.live && options.keys_given && options.keys.lastFrame() >= options.frames) {
+        throw UsageError("--keys: a key is pressed before frame " + std::to_string(options.keys.lastFrame()) +
+                         ", but --frames " + std::to_string(options.frames) + " runs only frames 0 to " +
+                         std::to_string(options.frames - 1));
+    }
+}
+
+// A --live session's settings, and the command that replays what it records.
+LiveOptions live_options(const CLI::App& app, const OptionTexts& texts, const StageDefaults& defaults, int argc,
+                         const char* const* argv, const std::string& program) {
+    LiveOptions live;
+    live.on = true;
+    live.record = texts.record;
+    live.events = texts.live_events;
+    live.screenshot = texts.live_screenshot;
+    live.title = defaults.title + " (" + defaults.id + ")";
+    std::vector<std::pair<std::string, std::string>> shaping{
+        {"--seed", texts.seed}, {"--frame-ms", texts.frame_ms}, {"--scale", texts.scale}};
+    for (const auto& [name, value] : texts.extra) shaping.emplace_back(name, value);
+    live.replay_command = replay_command(app, argc, argv, program, shaping);
+    // The stage's pictures; for a stage that saves none but final.png, one a half second.
+    live.replay_every = defaults.every > 0 ? defaults.every : 30;
+    live.replay_gif = !defaults.gif && gif_supported();
+    return live;
+}
+
+}  // namespace
+
+ParsedCommandLine parse_command_line(int argc, const char* const* argv, const StageDefaults& defaults) {
+    const std::string program = program_name(argc, argv, defaults);
+    OptionTexts texts(defaults);
+    const KeySet keys_of_stage = stage_keys(defaults);  // a bad key list is found even with --help
+    CLI::App app(defaults.title, program);
+    app.footer(help_footer(defaults));
+    // Unknown words stay in app.remaining() so we can name them ourselves.
+    app.allow_extras();
+    declare_options(app, texts, defaults);
 
     try {
         // CLI11 takes the arguments last-first and without the program name.
         std::vector<std::string> arguments;
         for (int i = argc - 1; i >= 1; --i) arguments.emplace_back(argv[i]);
-        // CLI11 would read "--gif=false" as turning the flag on or off by its value; a
-        // switch with a value is more likely a slip, and --no-gif says it plainly.
-        for (const std::string& argument : arguments) {
-            for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay="}) {
-                if (argument.starts_with(flag)) {
-                    throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
-                                     in_quotes(argument) + ")");
-                }
-            }
-        }
+        refuse_switch_values(arguments);
         if (!parse_strictly(app, arguments)) return {std::nullopt, 0};
 
         Options options;
-        if (live) {
-            refuse_picture_options_when_live(app);
-            if (!live_window_supported()) throw UsageError(std::string(kNoLiveSupport));
-        }
-        for (const char* name : {"--record", "--live-events", "--live-screenshot"}) {
-            if (!live && app.count(name) > 0) throw UsageError(std::string(name) + ": only with --live");
-        }
-        for (const auto& [name, text] : {std::pair<const char*, const std::string&>{"--record", record_text},
-                                         {"--live-events", live_events_text},
-                                         {"--live-screenshot", live_screenshot_text}}) {
-            if (app.count(name) > 0 && text.empty()) throw UsageError(std::string(name) + ": must name a file (got \"\")");
-        }
-        options.scale = int_option("--scale", scale_text, 1, Canvas::kMaxScale);
-        options.out_dir = out_text;
-        if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
-        options.frames = int_option("--frames", frames_text, 1, KeyScript::kMaxFrame);
-        options.every = int_option("--every", every_text, 0, KeyScript::kMaxFrame);
-        const bool want_gif = gif_wanted(gif_flag, no_gif_flag, defaults.gif);
-        if (options.every > 0 && frames_saved(options.frames, options.every) > kMostPictures) {
-            throw UsageError("--every: " + std::to_string(options.frames) + " frames would save " +
-                             std::to_string(frames_saved(options.frames, options.every)) + " pictures, more than the " +
-                             std::to_string(kMostPictures) + " a run may (a larger --every, or fewer --frames)");
-        }
-        options.gif_every = int_option("--gif-every", gif_every_text, 1, KeyScript::kMaxFrame);
-        if (app.count("--gif-every") > 0 && !want_gif) {
-            throw UsageError("--gif-every: there is no GIF to space out (add --gif)");
-        }
-        if (want_gif && !live && frames_saved(options.frames, options.gif_every) > kMostPictures) {
-            throw UsageError("--gif-every: " + std::to_string(options.frames) + " frames would make a GIF of " +
-                             std::to_string(frames_saved(options.frames, options.gif_every)) +
-                             " pictures, more than the " + std::to_string(kMostPictures) +
-                             " a run may (a larger --gif-every, fewer --frames, or --no-gif)");
-        }
-        options.seed = seed_option(seed_text);
-        if (app.count("--frame-ms") > 0) {
-            options.frame_ms = frame_ms_option(frame_ms_text);
-        }
-        try {
-            options.keys = KeyScript::parse(keys_text);
-        } catch (const KeyScriptError& error) {
-            throw UsageError(std::string("--keys: ") + error.what());
-        }
-        options.stage_keys = keys_of_stage;
-        if (!keys_of_stage.empty()) {
-            if (const auto stray = options.keys.firstKeyOutside(keys_of_stage)) {
-                throw UsageError("--keys: " + in_quotes(key_name(*stray)) + " is not a key of this stage (its keys: " +
-                                 keys_of_stage.text() + ")");
-            }
-        }
-        options.keys_text = keys_text;
-        options.keys_given = app.count("--keys") > 0;
-        // A live session starts from the page as it loads; the reader plays it, after
-        // any presses of their own --keys script.
-        if (live && !options.keys_given) options.keys = KeyScript();
-        // A press of the reader's own after the last frame would silently do nothing,
-        // which hides a mistake. The default script may run past a shorter --frames:
-        // asking for fewer frames than the demo needs is a fair request.
-        if (!live && options.keys_given && options.keys.lastFrame() >= options.frames) {
-            throw UsageError("--keys: a key is pressed before frame " + std::to_string(options.keys.lastFrame()) +
-                             ", but --frames " + std::to_string(options.frames) + " runs only frames 0 to " +
-                             std::to_string(options.frames - 1));
-        }
+        check_live_switches(app, texts);
+        const bool want_gif = read_picture_options(app, texts, defaults, options);
+        options.seed = seed_option(texts.seed);
+        if (app.count("--frame-ms") > 0) options.frame_ms = frame_ms_option(texts.frame_ms);
+        read_key_options(app, texts, keys_of_stage, options);
         // An empty name is a slip (an unset shell variable), never "no file": refused as
         // --out "" is, rather than silently running without the scene or the dump.
-        for (const auto& [name, value] : extra) {
+        for (const auto& [name, value] : texts.extra) {
             if (app.count(name) > 0 && value.empty()) throw UsageError(name + ": must name a file (got \"\")");
         }
-        options.extra = extra;
+        options.extra = texts.extra;
         options.overlay_offered = !defaults.overlay.empty();
-        options.overlay = overlay;
-        if (live) {
-            options.live.on = true;
-            options.live.record = record_text;
-            options.live.events = live_events_text;
-            options.live.screenshot = live_screenshot_text;
-            options.live.title = defaults.title + " (" + defaults.id + ")";
-            std::vector<std::pair<std::string, std::string>> shaping{
-                {"--seed", seed_text}, {"--frame-ms", frame_ms_text}, {"--scale", scale_text}};
-            for (const auto& [name, value] : extra) shaping.emplace_back(name, value);
-            options.live.replay_command = replay_command(app, argc, argv, program, shaping);
-            if (overlay) options.live.replay_command.emplace_back("--overlay");
-            // The stage's pictures; for a stage that saves none but final.png, one a half second.
-            options.live.replay_every = defaults.every > 0 ? defaults.every : 30;
-            options.live.replay_gif = !defaults.gif && gif_supported();
-        }
+        options.overlay = texts.overlay;
+        if (texts.live) options.live = live_options(app, texts, defaults, argc, argv, program);
+        if (texts.live && texts.overlay) options.live.replay_command.emplace_back("--overlay");
         // Last, so the note about a skipped GIF never comes with an error about another option.
-        options.gif = !live && want_gif && gif_possible(gif_flag, program);
+        options.gif = !texts.live && want_gif && gif_possible(texts.gif, program);
         return {std::move(options), 0};
     } catch (const UsageError& error) {
         std::cerr << program << ": " << error.what() << '\n';

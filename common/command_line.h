@@ -97,8 +97,8 @@ struct Options {
 // message has already been printed to stderr, prefixed by the program's file name).
 // A key scripted for a frame the run never reaches is a bad option too, since it would
 // silently do nothing, and so are a key the stage does not handle, --gif-every without
-// a GIF, --gif in a build without giflib (one line: gif_writer.h's kNoGifSupport),
-// --live in a build without SDL2 (live_window.h's kNoLiveSupport), picture options with
+// a GIF, --gif in a build without giflib (one line: build_features.h's kNoGifSupport),
+// --live in a build without SDL2 (build_features.h's kNoLiveSupport), picture options with
 // --live (a live session writes none: it records keys to replay), and --record without it. When the GIF is only the
 // stage's default, such a build says on stderr that it skips the GIF and runs on.
 struct ParsedCommandLine {

@@ -161,8 +161,6 @@ std::string gif_error(const std::filesystem::path& path, int code) {
 
 }  // namespace
 
-bool gif_supported() { return true; }
-
 struct GifWriter::Encoder {
     Encoder(const std::filesystem::path& file, int w, int h, int delay)
         : path(file), width(w), height(h), delay_cs(delay) {
@@ -277,8 +275,6 @@ void GifWriter::close() {
 }
 
 #else  // built without giflib: only the refusal remains
-
-bool gif_supported() { return false; }
 
 struct GifWriter::Encoder {};
 

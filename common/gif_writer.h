@@ -1,7 +1,8 @@
 #pragma once
 // Animated GIF files of the page: what a reader can put in a web page or a chat to show
 // a run moving. giflib is an optional dependency (Debian: libgif-dev); a build without
-// it still has this header, but gif_supported() says no and a GifWriter cannot be made.
+// it still has this header, but gif_supported() (build_features.h) says no and a
+// GifWriter cannot be made.
 //
 // The page uses a handful of colours (white paper, black text, a gray frame, blue, red,
 // green and orange strokes) and their anti-aliased blends with white, so one fixed
@@ -11,17 +12,11 @@
 
 #include <filesystem>
 #include <memory>
-#include <string_view>
 
+#include "build_features.h"  // gif_supported, kNoGifSupport
 #include "image.h"
 
 namespace browser {
-
-// True when this build was made with giflib (BROWSER_HAS_GIF=1).
-bool gif_supported();
-
-inline constexpr std::string_view kNoGifSupport =
-    "--gif: this build has no GIF support; install the Debian package libgif-dev and rebuild";
 
 // How long a GIF frame that stands for `frames_per_picture` animation frames of
 // frame_ms each is shown: rounded to whole centiseconds (the GIF's unit), at least 1 cs

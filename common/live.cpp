@@ -8,7 +8,7 @@
 #include <string>
 #include <system_error>
 
-#include "gif_writer.h"
+#include "build_features.h"  // gif_supported
 #include "interruption.h"
 #include "message_text.h"
 #include "page.h"

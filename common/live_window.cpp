@@ -209,8 +209,6 @@ private:
 
 }  // namespace
 
-bool live_window_supported() { return true; }
-
 std::unique_ptr<Screen> open_live_window(const LiveWindowSettings& settings) {
     return std::make_unique<SdlWindow>(settings);
 }
@@ -220,8 +218,6 @@ std::unique_ptr<Screen> open_live_window(const LiveWindowSettings& settings) {
 #else  // no SDL2
 
 namespace browser {
-
-bool live_window_supported() { return false; }
 
 std::unique_ptr<Screen> open_live_window(const LiveWindowSettings&) {
     throw LiveWindowError(std::string(kNoLiveSupport));

@@ -1,7 +1,7 @@
 #pragma once
 // The live session's window, made with SDL2 (Debian: libsdl2-dev). SDL2 is optional
 // like giflib: a build without it still has this header, but live_window_supported()
-// says no and --live is refused with the one line kNoLiveSupport.
+// (build_features.h) says no and --live is refused with the one line kNoLiveSupport.
 //
 // Keys: a-z, 0-9 (and the keypad's), comma, Up and Down go to the page, held keys
 // repeating as a browser repeats them; Space pauses, period steps, Escape ends, and so
@@ -21,17 +21,11 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 
+#include "build_features.h"  // kNoLiveSupport
 #include "live.h"
 
 namespace browser {
-
-// True when this build was made with SDL2 (BROWSER_HAS_SDL=1).
-bool live_window_supported();
-
-inline constexpr std::string_view kNoLiveSupport =
-    "--live: this build has no window (SDL2); install the Debian package libsdl2-dev and rebuild";
 
 struct LiveWindowError : std::runtime_error {
     using std::runtime_error::runtime_error;
