@@ -66,8 +66,9 @@ void drawGrid(browser::Canvas& canvas, const Core& core, std::vector<browser::Le
     legend.push_back({kCellColor, "grid cell, " + std::to_string(std::lround(size)) + " px"});
     legend.push_back({kCoveredColor, "cell a shape's widened box reaches"});
     legend.push_back({kCandidateColor, "candidate pair (oversize: not drawn)"});
-    legend.push_back({kCandidateColor, std::to_string(listed) + " tests a pass, not " + std::to_string(every_pair) +
-                                           ": " + std::to_string(every_pair - listed) + " saved"});
+    legend.push_back({kCandidateColor, "pair tests a pass: " + std::to_string(listed) + " of " +
+                                           std::to_string(every_pair)});
+    legend.push_back({kCandidateColor, "saved a pass: " + std::to_string(every_pair - listed)});
 }
 
 }  // namespace engine
