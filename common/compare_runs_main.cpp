@@ -136,8 +136,13 @@ void run_side(const Request& request, const Side& side, const fs::path& folder) 
     const int status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : 128 + WTERMSIG(wait_status);
     fs::remove(said);
     if (status != 0) {
-        throw Stop{status, "the " + std::string(side.name) + " run (" + browser::printable(side.setting) +
-                               "): " + browser::printable(first_line(complaint))};
+        // The program's own line, made printable by it already; the scene it names is
+        // the staging copy, which is gone with the refusal, so it is named by its side.
+        std::string line = first_line(complaint);
+        if (const std::size_t at = line.find(scene.string()); at != std::string::npos) {
+            line.replace(at, scene.string().size(), scene.filename().string());
+        }
+        throw Stop{status, "the " + std::string(side.name) + " run (" + browser::printable(side.setting) + "): " + line};
     }
     fs::remove(complaint);
 }
