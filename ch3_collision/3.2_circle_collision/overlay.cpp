@@ -12,6 +12,14 @@ namespace {
 using browser::Color;
 namespace draw = browser::overlay;
 
+// What every part of the overlay draws on: the canvas, the labels placed so far (so that
+// no label covers another) and the legend.
+struct Sheet {
+    browser::Canvas& canvas;
+    draw::LabelLayout labels;
+    std::vector<browser::LegendEntry>& legend;
+};
+
 // Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
 // never reads as the page's own.
 constexpr Color kStartColor{0, 150, 150, 255};  // teal: where the overlap starts
@@ -23,20 +31,19 @@ constexpr double kNormalLength = 20.0;  // px
 
 // The collision info of every pair the last pass found: start, end, the normal from the
 // start, and the depth beside the end.
-void drawCollisionInfo(browser::Canvas& canvas, const Core& core, std::vector<browser::LegendEntry>& legend) {
-    draw::LabelLayout labels;
+void drawCollisionInfo(Sheet& sheet, const Core& core) {
     for (const Collision& pair : core.physics().collisions()) {
         const CollisionInfo& info = pair.info;
-        draw::arrow(canvas, info.start(), info.start() + info.normal() * kNormalLength, kNormalColor);
-        draw::marker(canvas, info.start(), kStartColor);
-        draw::marker(canvas, info.end(), kEndColor);
-        labels.place(canvas, info.end() + draw::kLabelOffset, kEndColor,
-                     "depth " + browser::to_precision(info.depth(), 3));
+        draw::arrow(sheet.canvas, info.start(), info.start() + info.normal() * kNormalLength, kNormalColor);
+        draw::marker(sheet.canvas, info.start(), kStartColor);
+        draw::marker(sheet.canvas, info.end(), kEndColor);
+        sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
+                           "depth " + browser::to_precision(info.depth(), 3));
     }
-    legend.push_back({kStartColor, "start: where the overlap starts"});
-    legend.push_back({kEndColor, "end = start + normal * depth"});
-    legend.push_back({kNormalColor, "normal (first to second), 20 px"});
-    legend.push_back({kEndColor, "colliding pairs: " + std::to_string(core.physics().collisions().size())});
+    sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
+    sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
+    sheet.legend.push_back({kNormalColor, "normal (first to second), 20 px"});
+    sheet.legend.push_back({kEndColor, "colliding pairs: " + std::to_string(core.physics().collisions().size())});
 }
 
 }  // namespace
@@ -45,7 +52,8 @@ void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
     if (!window.overlay) return;
-    drawCollisionInfo(window.document.canvas, core, legend);
+    Sheet sheet{window.document.canvas, {}, legend};
+    drawCollisionInfo(sheet, core);
 }
 
 }  // namespace engine

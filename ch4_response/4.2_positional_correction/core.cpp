@@ -3,6 +3,7 @@
 #include <string>
 
 #include "number_format.h"
+#include "overlay.h"
 
 namespace engine {
 
@@ -62,13 +63,16 @@ void Core::keepFirstObjects(std::size_t count) {
 // updates that are due, so each picture shows the state from before that frame's
 // updates. The book's pass draws each collision onto that picture as it finds it; ours
 // records them, and the frame draws what the last pass found once the updates are
-// done. A frame that ran no pass adds nothing.
+// done. A frame that ran no pass adds nothing. Last, over everything, the overlay: like
+// the collision lines it shows the world after the updates, a step (or a frame's
+// steps) ahead of the shapes drawn, a pixel or two at the speeds of the book's scenes.
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
     const int due = timer_.updatesDue(window_.clock.nowMs());
     for (int k = 0; k < due; ++k) update();
     if (due > 0) physics_.drawCollisions(window_.document.canvas);
+    drawOverlay(window_, *this);
 }
 
 // One fixed step: find the collisions first, then let every shape take its step.

@@ -50,6 +50,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
+    .overlay = "the collision info, each moving shape's velocity and spin, and the positional correction",
 };
 
 class Page final : public browser::PageScripts {

@@ -7,19 +7,23 @@ namespace {
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
 // static one not at all, and the pair's centre of mass stays where it was.
-void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate) {
+void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
+                          PairResponse& response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
+    response.moved_first += correction * -a.invMass();
+    response.moved_second += correction * b.invMass();
 }
 
 // What a collision does to the pair. In this project: push them apart.
-void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const WorldSettings& world) {
+// What it did goes into `response`.
+void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
+                      PairResponse& response) {
     // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
     if (a.isStatic() && b.isStatic()) return;
-    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
+    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
 }
 
 }  // namespace
@@ -35,6 +39,7 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
+    responses_.clear();
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
 }
 
@@ -49,7 +54,7 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
             const std::optional<CollisionInfo> info = findCollision(a, b);
             if (!info) continue;
             collisions_.push_back({i, j, *info});  // two static shapes too: the borders' corners
-            resolveCollision(a, b, *info, world);
+            resolveCollision(a, b, *info, world, responses_[{i, j}]);
         }
     }
 }

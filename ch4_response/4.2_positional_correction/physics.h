@@ -21,9 +21,11 @@
 // once the frame's updates are done (core.cpp).
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "canvas.h"
@@ -43,6 +45,16 @@ struct Collision {
     CollisionInfo info;  // its normal points from the first shape towards the second
 };
 
+// What one step's relaxation passes did to a pair, added up over the passes. The engine
+// needs none of it; the overlay shows it (overlay.h).
+struct PairResponse {
+    Vec2 moved_first;   // how far positional correction moved the first shape
+    Vec2 moved_second;  // and the second: the other way, in proportion to the inverse masses
+};
+
+// A pair by the places of its shapes in the list, first < second.
+using PairKey = std::pair<std::size_t, std::size_t>;
+
 // Broad phase, then narrow phase. The info's normal is turned, where needed, to point
 // from `a` towards `b`, whichever shape's test worked it out.
 std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b);
@@ -54,6 +66,8 @@ public:
     // in the book; only its resolution leaves it as it is).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
+    // What the last step's passes did to every pair any of them resolved.
+    const std::map<PairKey, PairResponse>& responses() const { return responses_; }
 
     // Draws the collision info of every pair the last pass found: an orange line
     // from start to end.
@@ -63,6 +77,7 @@ private:
     void relaxationPass(ShapeList shapes, const WorldSettings& world);
 
     std::vector<Collision> collisions_;
+    std::map<PairKey, PairResponse> responses_;
 };
 
 }  // namespace engine

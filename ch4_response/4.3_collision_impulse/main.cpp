@@ -53,6 +53,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first six objects"},
     },
+    .overlay = "the collision info, velocities and spins, the positional correction, and the impulses",
 };
 
 class Page final : public browser::PageScripts {

@@ -9,11 +9,14 @@ namespace {
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
 // static one not at all, and the pair's centre of mass stays where it was.
-void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate) {
+void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
+                          PairResponse& response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
+    response.moved_first += correction * -a.invMass();
+    response.moved_second += correction * b.invMass();
 }
 
 // An impulse is a sudden change of momentum, j = m dv: it changes the velocity of a
@@ -30,11 +33,13 @@ void applyImpulse(RigidShape& a, RigidShape& b, Vec2 impulse) {
 // tangent, friction takes away part of the sliding; the book's "simplistic" model
 // scales the impulse that would stop the slide by (1 + e) mu and caps it at jN
 // (Equation 3, not Coulomb's |jT| <= mu jN; see docs/errata.md).
-void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const WorldSettings& world) {
+// What it did goes into `response`.
+void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
+                      PairResponse& response) {
     // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
     if (a.isStatic() && b.isStatic()) return;
-    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
+    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
+    response.contact = (info.start() + info.end()) * 0.5;
 
     const Vec2 normal = info.normal();  // from a to b
     const Vec2 relative_velocity = b.velocity() - a.velocity();
@@ -51,12 +56,14 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
     // Equation 2: after the impulse the normal speed is -e times what it was.
     const double jN = -(1 + restitution) * normal_speed / inv_mass_sum;
     applyImpulse(a, b, normal * jN);
+    response.normal_impulse += normal * jN;
 
     // The tangent points against the sliding, from the velocity before the impulse.
     const Vec2 tangent = (relative_velocity - normal * normal_speed).normalize() * -1;
     double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / inv_mass_sum;
     jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, tangent * jT);
+    response.tangent_impulse += tangent * jT;
 }
 
 }  // namespace
@@ -72,6 +79,7 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
+    responses_.clear();
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) relaxationPass(shapes, world);
 }
 
@@ -89,7 +97,7 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
             // works on, for the tests, so two static shapes lying in each other are
             // left out of it.
             if (!(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world);
+            resolveCollision(a, b, *info, world, responses_[{i, j}]);
         }
     }
 }

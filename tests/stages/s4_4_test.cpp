@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "book_scene.h"
 #include "circle.h"
@@ -10,6 +12,8 @@
 #include "my_game.h"
 #include "platform_check.h"
 #include "rectangle.h"
+#include "scratch_folder.h"
+#include "stage_program.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -56,4 +60,67 @@ TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it at 2/3 g s
     }
     const double acceleration = (ball.velocity().dot(downhill) - speed_at_2_5s) / (300 * dt);
     CHECK_THAT(acceleration, test::near(2.0 / 3 * g * std::sin(slope), 0.01 * 2.0 / 3 * g * std::sin(slope)));
+}
+
+TEST_CASE("s4_4: the overlay draws the lever arms from both centres to the contact the impulses act at") {
+    engine::WorldSettings settings = engine::kBookWorld;  // movement off: only the response acts
+    settings.positional_correction = false;
+    settings.relaxation_iterations = 1;
+    test::WorldFixture page(settings);
+    // A static circle at (200.5, 100.5) and one of mass 1 at (238.5, 100.5), radius 20,
+    // coming at it at 60 px/s: they overlap from x = 218.5 (the moving one's rim, the
+    // start) to 220.5. All the inverse mass is the moving circle's, so the contact is
+    // the start: the arms are (18, 0) and (-20, 0). Along the line of centres the
+    // impulse turns neither circle.
+    page.core.add(engine::Circle({200.5, 100.5}, 20, engine::PhysicalAttributes{.mass = 0.0}));
+    page.core.add(engine::Circle({238.5, 100.5}, 20)).setVelocity({-60, 0});
+    page.window.overlay = true;
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
+    const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
+    CHECK_THAT(response.contact, test::near(Vec2{218.5, 100.5}, 1e-9));
+    CHECK_THAT(response.arm_first, test::near(Vec2{18, 0}, 1e-9));
+    CHECK_THAT(response.arm_second, test::near(Vec2{-20, 0}, 1e-9));
+    CHECK(response.spin_first == 0.0);
+    CHECK(response.spin_second == 0.0);
+    browser::Color lever{};
+    for (const auto& entry : page.window.document.legend) {
+        if (entry.text.rfind("lever arms", 0) == 0) lever = entry.color;
+    }
+    // The first arm runs along the row y = 100.5 from x = 200.5 to 218.5.
+    CHECK(page.window.document.canvas.pixels().at(205, 100) == lever);
+}
+
+// The README's walkthrough ("Play it live"): with movement on, a circle is made low
+// over the steep platform and a box up to its left, each given 100 px/s downwards (K),
+// since gravity alone (10 px/s^2) would take seconds to bring them down.
+TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns as it lands") {
+    test::ScratchFolder folder("s4_4_walkthrough");
+    const std::string script = "comma a*20 s*8 g 7 k*100 0 a*6 w*4 f 8 k*100 0";
+    const test::ProgramRun run = test::runStageProgram(
+        folder, "--keys \"" + script + "\" --frames 240 --every 30 --out " + test::quoted(folder.path / "out") +
+                    " --dump " + test::quoted(folder.path / "dump.csv"));
+    REQUIRE(run.status == 0);
+    const std::vector<test::DumpRow> rows = test::readDump(folder.path / "dump.csv");
+    const auto state = [&](long step, std::size_t index) {
+        for (const test::DumpRow& row : rows) {
+            if (row.step == step && row.index == index) return row;
+        }
+        FAIL("no row for step " << step << ", object " << index);
+        return test::DumpRow{};
+    };
+    const long last = rows.back().step;
+    REQUIRE(state(1, 7).shape == "circle");
+    REQUIRE(state(1, 8).shape == "rectangle");
+    // Gravity pulls through the centre and turns nothing: while a shape flies free its
+    // angular velocity stays exactly 0 and its angle exactly where it was made.
+    CHECK(state(1, 7).angular_velocity == 0.0);
+    CHECK(state(1, 8).angle == 0.0);
+    // The circle falls some 80 px to the slope at about 120 px/s, which takes more than
+    // half a second: at step 10 (a sixth of a second) it is still free.
+    CHECK(state(10, 7).angular_velocity == 0.0);
+    // It has landed and rolls: at the end it spins at over half a radian a second.
+    CHECK(std::abs(state(last, 7).angular_velocity) > 0.5);
+    // The box has turned by more than half a radian in its landing.
+    CHECK(std::abs(state(last, 8).angle) > 0.5);
 }

@@ -1,0 +1,38 @@
+// The overlay of positional correction (4.2 on): an arrow from each corrected shape's
+// centre, ten times as long as the last step's passes moved it.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "circle.h"
+#include "near.h"
+#include "world_fixture.h"
+
+TEST_CASE("correction overlay: the move of one pass, ten times longer, from the moved centre") {
+    engine::WorldSettings settings = engine::kBookWorld;  // movement off: only the correction moves shapes
+    settings.positional_correction = true;
+    settings.relaxation_iterations = 1;
+    test::WorldFixture page(settings);
+    // A static circle and one of mass 1, radius 20, centres 38 apart on the row of pixel
+    // centres y = 100.5: 2 px deep. All of the correction, depth x rate, goes to the
+    // movable one, along +x.
+    page.core.add(engine::Circle({200.5, 100.5}, 20, engine::PhysicalAttributes{.mass = 0.0}));
+    page.core.add(engine::Circle({238.5, 100.5}, 20));
+    page.window.overlay = true;
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
+    const double moved = 2.0 * settings.correction_rate;
+    REQUIRE_THAT(page.core.object(1).center().x, test::near(238.5 + moved, 1e-9));
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    // The arrow runs from x = 238.5 + moved to 238.5 + 11 moved (256.1 at the book's
+    // rate 0.8), along the row: (250.5, 100.5) is on it, (257.5, 100.5) past its tip and
+    // a pixel short of the circle's outline, drawn where it was before the step (258.5).
+    REQUIRE(238.5 + 11 * moved > 252.0);
+    REQUIRE(238.5 + 11 * moved < 257.0);
+    browser::Color correction{};
+    for (const auto& entry : page.window.document.legend) {
+        if (entry.text.rfind("correction", 0) == 0) correction = entry.color;
+    }
+    CHECK(pixels.at(250, 100) == correction);
+    CHECK(pixels.at(257, 100) == browser::colors::kWhite);
+}
