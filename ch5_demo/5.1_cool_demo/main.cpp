@@ -47,6 +47,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
+    .overlay = "the collision info, and each moving shape's velocity and spin",
 };
 
 class Page final : public browser::PageScripts {

@@ -101,6 +101,8 @@ public:
     }
 
     const PairStatistics& statistics() const { return statistics_; }
+    // The grid's list, as the last step walked it (the overlay draws it).
+    const SpatialGrid& grid() const { return grid_; }
 
 private:
     // The book's double loop: every pair (i, j > i), in order.

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "number_format.h"
+#include "overlay.h"
 
 namespace engine {
 
@@ -60,11 +61,13 @@ void Core::keepFirstObjects(std::size_t count) {
 
 // The book's order (3.1 on): the frame shows the world as it stands, then runs the
 // updates that are due, so each picture shows the state from before that frame's
-// updates. From 4.3 on the book's pass no longer draws the collisions it finds.
+// updates. From 4.3 on the book's pass no longer draws the collisions it finds. Last,
+// over everything, the overlay.
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
     for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
+    drawOverlay(window_, *this);
 }
 
 // One fixed step: find the collisions first, then let every shape take its step. With

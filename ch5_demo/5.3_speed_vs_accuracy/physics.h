@@ -64,6 +64,7 @@ public:
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.
     const PairStatistics& pairStatistics() const { return broad_phase_.statistics(); }
+    const BroadPhase& broadPhase() const { return broad_phase_; }
 
 private:
     std::vector<Collision> collisions_;

@@ -77,6 +77,16 @@ public:
     // The place in row i of its first partner after j.
     std::size_t positionAfter(std::size_t i, std::size_t j) const;
 
+    // What the list was made from, for the overlay to draw: how many shapes, the side
+    // of a cell, and per shape where it stood, half the width of its widened box, and
+    // whether it was too large for the cells (then it is in none, and every shape's
+    // candidate).
+    std::size_t listedCount() const { return row_begin_.size() - 1; }
+    double cellSize() const { return cell_size_; }
+    Vec2 listedAt(std::size_t i) const { return listed_at_[i]; }
+    double reach(std::size_t i) const { return reach_[i]; }
+    bool isOversize(std::size_t i) const { return oversize_[i]; }
+
 private:
     // The cells a box covers: columns x0..x1 and rows y0..y1.
     struct CellRange {

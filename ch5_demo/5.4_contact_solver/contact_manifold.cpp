@@ -20,6 +20,12 @@ constexpr std::uint32_t kCutAtStart = 4;  // the side line through the reference
 constexpr std::uint32_t kCutAtEnd = 5;    // ... through its second corner
 // The key of the one point of a pair with a circle, and of the fallback point below.
 constexpr std::uint32_t kSinglePoint = 0xFFFF;
+// Where the faces sit in a key: bits 0-3 the point's feature, 4-7 the incident face,
+// 8-11 the reference face, bit 12 set when the reference face is b's.
+constexpr int kIncidentShift = 4;
+constexpr int kReferenceShift = 8;
+constexpr std::uint32_t kReferenceIsB = 1u << 12;
+constexpr std::uint32_t kFaceMask = 0xF;
 
 // The face of `box` whose outward normal lies nearest `direction` (largest dot).
 std::size_t faceFacing(const Rectangle& box, Vec2 direction) {
@@ -78,8 +84,9 @@ UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2
     if (clip(segment, along, second.dot(along), kCutAtEnd) == 0) return {};
 
     // The key: who is the reference, which two faces, which feature of the point.
-    const std::uint32_t faces = (b_is_reference ? 1u << 12 : 0u) | static_cast<std::uint32_t>(reference_face) << 8 |
-                                static_cast<std::uint32_t>(incident_face) << 4;
+    const std::uint32_t faces = (b_is_reference ? kReferenceIsB : 0u) |
+                                static_cast<std::uint32_t>(reference_face) << kReferenceShift |
+                                static_cast<std::uint32_t>(incident_face) << kIncidentShift;
     UpToTwo<ContactPoint> points;
     for (const Tagged& end : segment) {
         // Behind the reference face by `depth`; the point itself goes halfway back to
@@ -92,6 +99,13 @@ UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2
 }
 
 }  // namespace
+
+ContactFeatures featuresOf(std::uint32_t key) {
+    if (key == kSinglePoint) return {.single_point = true};
+    return {.reference_is_b = (key & kReferenceIsB) != 0,
+            .reference_face = (key >> kReferenceShift) & kFaceMask,
+            .incident_face = (key >> kIncidentShift) & kFaceMask};
+}
 
 ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
     ContactManifold manifold{info.normal(), {}};

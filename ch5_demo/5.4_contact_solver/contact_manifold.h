@@ -63,6 +63,17 @@ struct ContactManifold {
     UpToTwo<ContactPoint> points;
 };
 
+// What a point's key names: the reference face and the incident face (face i of a
+// rectangle runs from its corner i to corner i + 1), or that the point stands alone (a
+// pair with a circle, or rectangles where the book's one point stood in).
+struct ContactFeatures {
+    bool single_point = false;
+    bool reference_is_b = false;  // the reference face is the second shape's
+    std::size_t reference_face = 0;
+    std::size_t incident_face = 0;
+};
+ContactFeatures featuresOf(std::uint32_t key);
+
 // The contact points of two shapes whose overlap the narrow phase found (`info`, its
 // normal from a towards b). Two rectangles give one or two points, a pair with a
 // circle one.

@@ -79,7 +79,6 @@ public:
     std::size_t pointCount() const;
     std::size_t persistedPointCount() const { return persisted_; }
 
-private:
     // What the solver keeps about one contact point over a step.
     struct Point {
         ContactPoint contact;
@@ -108,6 +107,11 @@ private:
         double k11 = 0.0, k12 = 0.0, k22 = 0.0;  // the speeds unit impulses at 1, 2 make at 1, 2
         double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1, when solved as a pair
     };
+    // The contacts the last step solved, with the totals it ended with (the overlay
+    // draws them).
+    const std::vector<Contact>& contacts() const { return contacts_; }
+
+private:
     void findContacts(ShapeList shapes, BroadPhase& broad_phase, const WorldSettings& world,
                       std::vector<Collision>& found);
     void prepare(ShapeList shapes, const WorldSettings& world);

@@ -52,6 +52,7 @@ public:
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.
     const PairStatistics& pairStatistics() const { return broad_phase_.statistics(); }
+    const BroadPhase& broadPhase() const { return broad_phase_; }
     const ContactSolver& contactSolver() const { return contact_solver_; }
 
 private:

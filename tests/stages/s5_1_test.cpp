@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -225,4 +227,60 @@ TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
     };
     CHECK(u16(6) == 800 + browser::kPanelWidth);
     CHECK(u16(8) == 450);
+}
+
+TEST_CASE("s5_1: the README's key script makes three boxes and three balls at once, and H at two seconds kicks every moving shape") {
+    // README.md, "Play it live": --keys "f*3 g*3 h@120" --frames 240. Frame 0's clock
+    // holds a hair less than one step (core.cpp's timer), so frame k runs step k: the
+    // presses of frame 0 come before step 1, which has six more shapes than step 0
+    // (three rectangles, then three circles), and H, before frame 120, gives every
+    // moving shape a new velocity, uniform in the square [-250, 250)^2 px/s, in step 120.
+    test::ScratchFolder folder("s5_1_readme_script");
+    const std::filesystem::path dump = folder.path / "dump.csv";
+    const test::ProgramRun run = test::runStageProgram(
+        folder, "--keys \"f*3 g*3 h@120\" --frames 240 --every 0 --no-gif --out " +
+                    test::quoted(folder.path / "out") + " --dump " + test::quoted(dump));
+    REQUIRE(run.status == 0);
+    const std::vector<test::DumpRow> rows = test::readDump(dump);
+    const auto at = [&](long step) {
+        std::vector<test::DumpRow> found;
+        std::copy_if(rows.begin(), rows.end(), std::back_inserter(found),
+                     [&](const test::DumpRow& row) { return row.step == step; });
+        return found;
+    };
+    const std::vector<test::DumpRow> start = at(0), first = at(1);
+    REQUIRE(first.size() == start.size() + 6);
+    for (std::size_t k = 0; k < 6; ++k) CHECK(first[start.size() + k].shape == (k < 3 ? "rectangle" : "circle"));
+
+    // H draws a new velocity u for each moving shape, whatever its velocity v was: u
+    // misses v by less than 50 px/s only when it falls in a disc of radius 50 around v,
+    // pi 50^2 / 500^2 = 3 % of the square. So in the step of H nine in ten moving shapes
+    // or more change their velocity by over 50 px/s; in the step before, gravity adds
+    // g dt = 1/3 px/s, and only a collision changes a velocity that much.
+    const auto shareChanged = [](const std::vector<test::DumpRow>& from, const std::vector<test::DumpRow>& to) {
+        REQUIRE(from.size() == to.size());
+        int moving = 0, changed = 0;
+        for (std::size_t k = 0; k < from.size(); ++k) {
+            if (from[k].vx == 0.0 && from[k].vy == 0.0 && to[k].vx == 0.0 && to[k].vy == 0.0) continue;  // static
+            ++moving;
+            if (std::hypot(to[k].vx - from[k].vx, to[k].vy - from[k].vy) > 50) ++changed;
+        }
+        return moving > 0 ? static_cast<double>(changed) / moving : 0.0;
+    };
+    const double before = shareChanged(at(118), at(119)), kicked = shareChanged(at(119), at(120));
+    INFO("share of moving shapes whose velocity changed by over 50 px/s: " << before << " before H, " << kicked
+                                                                              << " in its step");
+    CHECK(kicked > 0.9);
+    CHECK(before < 0.5);
+
+    // The mean length of a velocity uniform in the square is 250 (sqrt 2 + ln(1 + sqrt 2)) / 3 = 191 px/s.
+    double sum = 0.0;
+    int moving = 0;
+    for (const test::DumpRow& row : at(120)) {
+        if (row.vx == 0.0 && row.vy == 0.0) continue;
+        sum += std::hypot(row.vx, row.vy);
+        ++moving;
+    }
+    REQUIRE(moving > 0);
+    CHECK_THAT(sum / moving, test::near(250 * (std::sqrt(2.0) + std::log(1 + std::sqrt(2.0))) / 3, 60));
 }

@@ -469,3 +469,39 @@ TEST_CASE("s5_4: a resting column's contact points are found again, by their key
     CHECK(solver.persistedPointCount() == 16);
 }
 
+
+// =================================================================================
+// What the overlay draws (contact_overlay.h): the solver's own contacts
+
+TEST_CASE("s5_4: the overlay's faces and totals: the platform's top face is the reference, and a resting box's pushes add up to its weight") {
+    // A box hanging over a platform's end, as in clipping.json but at rest: 80 x 40, on
+    // a platform whose top face (y = 140) ends at x = 280 while the box spans 210 to 290. The contact's points are
+    // the box's bottom-left corner and the cut by the platform's side line x = 280; the
+    // reference face is the platform's top (normal (0, -1)), the incident face the box's
+    // bottom (normal (0, 1)). At rest the step's normal totals hold the box's weight over
+    // one step: m g dt = 1 x 20 / 60.
+    test::WorldFixture page(solverWorld());
+    page.core.add(engine::Rectangle({160, 150}, 240, 20, {.mass = 0, .friction = 0.6, .restitution = 0}));
+    page.core.add(engine::Rectangle({250, 120.5}, 80, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
+    page.steps(kStepsPerSecond);
+    const auto& contacts = page.core.physics().contactSolver().contacts();
+    REQUIRE(contacts.size() == 1);
+    const engine::ContactSolver::Contact& contact = contacts[0];
+    REQUIRE(contact.points.size() == 2);
+    const engine::ContactFeatures features = engine::featuresOf(contact.points[0].contact.key);
+    REQUIRE_FALSE(features.single_point);
+    CHECK(engine::featuresOf(contact.points[1].contact.key).reference_face == features.reference_face);
+    const auto& platform = static_cast<const engine::Rectangle&>(page.core.object(0));
+    const auto& box = static_cast<const engine::Rectangle&>(page.core.object(1));
+    const engine::Rectangle& reference = features.reference_is_b ? box : platform;
+    const engine::Rectangle& incident = features.reference_is_b ? platform : box;
+    CHECK(&reference == &platform);
+    CHECK_THAT(reference.faceNormals()[features.reference_face], test::near(Vec2{0, -1}, 1e-9));
+    CHECK_THAT(incident.faceNormals()[features.incident_face], test::near(Vec2{0, 1}, 1e-6));
+    const double left = std::min(contact.points[0].contact.position.x, contact.points[1].contact.position.x);
+    const double right = std::max(contact.points[0].contact.position.x, contact.points[1].contact.position.x);
+    CHECK_THAT(left, test::near(210, 0.01));
+    CHECK_THAT(right, test::near(280, 1e-9));
+    const double pushes = contact.points[0].normal_impulse + contact.points[1].normal_impulse;
+    CHECK_THAT(pushes, test::near(kG * kDt, 1e-6));
+}

@@ -1,0 +1,26 @@
+#pragma once
+// The stage's overlay (--overlay, or the key t live and in key scripts): what the
+// engine computed this frame, drawn over the book's picture, with a legend at the
+// bottom of the echo panel that names each colour. The book's pictures stay the book's:
+// with the overlay off nothing here draws.
+//
+// From this stage on the pass finds the collision info of each colliding pair (Figure
+// 3-6), and the overlay shows it all: the start and the end of the overlap, the normal
+// (drawn 20 px long, so its direction shows even where the overlap is a hair deep) and
+// the depth in numbers, where the book shows only the line from start to end.
+//
+// Chapter 4 sets the shapes moving: each moving shape gets its velocity as an arrow
+// from its centre to where that velocity takes it in half a second, and its angular
+// velocity as a curved arrow round its centre, turning the way the shape turns, as far
+// as it turns in half a second.
+
+#include "browser.h"
+#include "core.h"
+
+namespace engine {
+
+// While window.overlay is on, draws the overlay onto the canvas and sets the legend;
+// while it is off, takes the legend away. Called last in a frame, over everything.
+void drawOverlay(browser::Window& window, const Core& core);
+
+}  // namespace engine

@@ -1,0 +1,77 @@
+#include "overlay.h"
+
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "grid_overlay.h"
+#include "number_format.h"
+#include "overlay_draw.h"
+
+namespace engine {
+namespace {
+
+using browser::Color;
+namespace draw = browser::overlay;
+
+// Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
+// never reads as the page's own.
+constexpr Color kStartColor{0, 150, 150, 255};  // teal: where the overlap starts
+constexpr Color kEndColor{160, 0, 200, 255};    // purple: where it ends
+constexpr Color kNormalColor{200, 0, 120, 255}; // crimson: the normal
+
+constexpr Color kVelocityColor{0, 140, 60, 255};  // dark green: velocity and spin
+
+// The normal is a unit vector: drawn this long, whatever the depth.
+constexpr double kNormalLength = 20.0;  // px
+
+// The collision info of every pair the last pass found: start, end, the normal from the
+// start, and the depth beside the end.
+void drawCollisionInfo(browser::Canvas& canvas, const Core& core, std::vector<browser::LegendEntry>& legend) {
+    draw::LabelLayout labels;
+    for (const Collision& pair : core.physics().collisions()) {
+        const CollisionInfo& info = pair.info;
+        draw::arrow(canvas, info.start(), info.start() + info.normal() * kNormalLength, kNormalColor);
+        draw::marker(canvas, info.start(), kStartColor);
+        draw::marker(canvas, info.end(), kEndColor);
+        labels.place(canvas, info.end() + draw::kLabelOffset, kEndColor,
+                     "depth " + browser::to_precision(info.depth(), 3));
+    }
+    legend.push_back({kStartColor, "start: where the overlap starts"});
+    legend.push_back({kEndColor, "end = start + normal * depth"});
+    legend.push_back({kNormalColor, "normal (first to second), 20 px"});
+    legend.push_back({kEndColor, "colliding pairs: " + std::to_string(core.physics().collisions().size())});
+}
+
+// Motion is drawn as the way it goes in this much time: long enough to see at the
+// speeds of the book's scenes (tens of px/s, a few rad/s), short enough to stay near
+// the shape.
+constexpr double kMotionShown = 0.5;  // s
+// The curved arrow of a spin runs this far outside the shape's bounding circle.
+constexpr double kSpinGap = 4.0;  // px
+
+// Every moving shape's velocity and angular velocity, as far as they carry it in
+// kMotionShown seconds. A static shape never moves and shows nothing.
+void drawMotion(browser::Canvas& canvas, const Core& core, std::vector<browser::LegendEntry>& legend) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        if (shape.isStatic()) continue;
+        draw::arrow(canvas, shape.center(), shape.center() + shape.velocity() * kMotionShown, kVelocityColor);
+        draw::turn_arrow(canvas, shape.center(), shape.boundRadius() + kSpinGap, -std::numbers::pi / 2,
+                         shape.angularVelocity() * kMotionShown, kVelocityColor);
+    }
+    legend.push_back({kVelocityColor, "velocity, spin: motion in 0.5 s"});
+}
+
+}  // namespace
+
+void drawOverlay(browser::Window& window, const Core& core) {
+    std::vector<browser::LegendEntry>& legend = window.document.legend;
+    legend.clear();
+    if (!window.overlay) return;
+    drawGrid(window.document.canvas, core, legend);
+    drawCollisionInfo(window.document.canvas, core, legend);
+    drawMotion(window.document.canvas, core, legend);
+}
+
+}  // namespace engine

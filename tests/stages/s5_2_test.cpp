@@ -1,0 +1,59 @@
+// Stage 5.2: what its overlay shows of the grid (grid_overlay.h), held to numbers worked
+// out by hand from the grid's rules (spatial_grid.cpp): cells of 3 median radii plus
+// two skins, a skin of a fifth of a radius, and a pair listed when the shapes' boxes,
+// widened by the skin, overlap.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "circle.h"
+#include "grid_overlay.h"
+#include "near.h"
+#include "world_fixture.h"
+
+namespace {
+
+// Three still balls of radius 10: two 22 px apart (their circles miss by 2 px, but
+// their boxes, 12 px each way of the centre, overlap by 2), one far away.
+struct ThreeBalls {
+    ThreeBalls() : page(still()) {
+        page.core.add(engine::Circle({100, 100}, 10));
+        page.core.add(engine::Circle({122, 100}, 10));
+        page.core.add(engine::Circle({600, 300}, 10));
+        page.steps(1);
+    }
+    static engine::WorldSettings still() {
+        engine::WorldSettings world = engine::kBookWorld;
+        world.movement = false;
+        world.broad_phase = engine::BroadPhaseKind::grid;
+        return world;
+    }
+    test::WorldFixture page;
+};
+
+}  // namespace
+
+TEST_CASE("s5_2: the overlay's grid: cells of 34 px, boxes reaching 12 px, one candidate pair of three") {
+    const ThreeBalls balls;
+    const engine::SpatialGrid& grid = balls.page.core.physics().broadPhase().grid();
+    // median radius 10: skin 2, cell 3 x 10 + 2 x 2 = 34 px, reach 10 + 2 = 12 px
+    // (and a margin of 1e-9 of the coordinates).
+    CHECK_THAT(grid.cellSize(), test::near(34, 1e-12));
+    CHECK_THAT(grid.reach(0), test::near(12, 1e-6));
+    REQUIRE(grid.listedCount() == 3);
+    CHECK(grid.rowBegin(3) == 1);  // one pair on the list
+    CHECK(grid.rowEnd(0) - grid.rowBegin(0) == 1);
+    CHECK(grid.partner(grid.rowBegin(0)) == 1);
+}
+
+TEST_CASE("s5_2: the overlay's count: a pass tests the one listed pair, not all three, and saves two") {
+    ThreeBalls balls;
+    std::vector<browser::LegendEntry> legend;
+    engine::drawGrid(balls.page.window.document.canvas, balls.page.core, legend);
+    REQUIRE(legend.size() >= 2);
+    CHECK(legend[legend.size() - 2].text == "pair tests a pass: 1 of 3");
+    CHECK(legend.back().text == "saved a pass: 2");
+    // The book's 15 passes test one pair each instead of three.
+    CHECK(balls.page.core.physics().pairStatistics().candidates == 15);
+}
