@@ -329,6 +329,7 @@ LiveOptions live_options(const CLI::App& app, const OptionTexts& texts, const St
         {"--seed", texts.seed}, {"--frame-ms", texts.frame_ms}, {"--scale", texts.scale}};
     for (const auto& [name, value] : texts.extra) shaping.emplace_back(name, value);
     live.replay_command = replay_command(app, argc, argv, program, shaping);
+    if (texts.overlay) live.replay_command.emplace_back("--overlay");
     // The stage's pictures; for a stage that saves none but final.png, one a half second.
     live.replay_every = defaults.every > 0 ? defaults.every : 30;
     live.replay_gif = !defaults.gif && gif_supported();
@@ -369,7 +370,6 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         options.overlay_offered = !defaults.overlay.empty();
         options.overlay = texts.overlay;
         if (texts.live) options.live = live_options(app, texts, defaults, argc, argv, program);
-        if (texts.live && texts.overlay) options.live.replay_command.emplace_back("--overlay");
         // Last, so the note about a skipped GIF never comes with an error about another option.
         options.gif = !texts.live && want_gif && gif_possible(texts.gif, program);
         return {std::move(options), 0};

@@ -106,3 +106,25 @@ TEST_CASE("s1_1: keys other than F and G draw nothing") {
     for (browser::Key key : {browser::Key::A, browser::Key::Digit0, browser::Key::Up, browser::Key::Comma})
         CHECK(inkBox(drawOne(key, 1)).empty());
 }
+
+// The README's walkthrough ("Play it live"): F G F G, each press one more outline.
+TEST_CASE("s1_1: README walkthrough: each press draws one more outline") {
+    browser::Canvas canvas;
+    browser::Random random(browser::Random::kDefaultSeed);
+    engine::Core core(canvas);
+    engine::UserControl control(core, random);
+    const auto inked = [&canvas] {
+        int count = 0;
+        for (int y = 0; y < canvas.height(); ++y)
+            for (int x = 0; x < canvas.width(); ++x) count += canvas.pixels().at(x, y) != browser::colors::kWhite;
+        return count;
+    };
+    int before = inked();
+    CHECK(before == 0);
+    for (const browser::Key key : browser::KeyScript::parse("f g f g").pressesAt(0)) {
+        control.onKeyDown(key);
+        const int after = inked();
+        CHECK(after > before);  // nothing is erased, and the new outline adds ink
+        before = after;
+    }
+}

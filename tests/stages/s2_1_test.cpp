@@ -2,10 +2,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <string>
 
 #include "circle.h"
+#include "my_game.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
+#include "walkthrough.h"
 
 using browser::Key;
 
@@ -62,4 +65,26 @@ TEST_CASE("s2_1: the selected object is red, the others blue, and the echo names
     CHECK(pixels.at(80, 100).r < 60);
     CHECK(page.window.document.ui_echo.find("Id: 1") != std::string::npos);
     CHECK(page.window.document.ui_echo.find("Center: 301,100") != std::string::npos);
+}
+
+// The README's walkthrough ("Play it live"): two of each shape, then object 6 selected.
+TEST_CASE("s2_1: README walkthrough: the selected shape turns red, the echo names it") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    test::playScript(page, "f g f g 6", 1);
+    REQUIRE(page.core.objectCount() >= 7);
+    CHECK(page.core.selectedIndex() == 6);
+    CHECK(page.window.document.ui_echo.find("Id: 6") != std::string::npos);
+    // Red is drawn for the selected shape only: some pixels are red, and blue ones remain.
+    const browser::Image& pixels = page.window.document.canvas.pixels();
+    int red = 0, blue = 0;
+    for (int j = 0; j < pixels.height; ++j) {
+        for (int i = 0; i < pixels.width; ++i) {
+            const browser::Color c = pixels.at(i, j);
+            if (c.r > 200 && c.g < 60 && c.b < 60) ++red;
+            if (c.b > 200 && c.r < 60 && c.g < 60) ++blue;
+        }
+    }
+    CHECK(red > 0);
+    CHECK(blue > 0);
 }

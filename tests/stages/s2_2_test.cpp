@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "circle.h"
@@ -11,6 +12,7 @@
 #include "my_game.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
+#include "walkthrough.h"
 
 using browser::Key;
 using engine::Vec2;
@@ -86,4 +88,22 @@ TEST_CASE("s2_2: R keeps the cursor and the four borders, and nothing after them
     for (std::size_t i = 1; i < kept.size(); ++i) CHECK(page.core.object(i).center() == kept[i]);
     page.press(Key::R);  // nothing left to take
     CHECK(page.core.objectCount() == kept.size());
+}
+
+// The README's walkthrough ("Play it live"): two shapes at the cursor (5, 6), two more
+// 150 px to the right at frame 20 (7, 8), then shape 8 fixed at frame 60.
+TEST_CASE("s2_2: README walkthrough: the shapes sink, and the fixed one stays where it was fixed") {
+    test::StageFixture page;
+    engine::buildScene(page.core);
+    const std::string script = "f g 0@20 d*15 f g 8@60 h";
+    test::playScript(page, script, 0, 21);
+    REQUIRE(page.core.objectCount() == 9);
+    CHECK(page.core.object(7).center().x - page.core.object(5).center().x == 150.0);
+    test::playScript(page, script, 21, 61);  // H pressed before frame 60
+    const Vec2 fixed_at = page.core.object(8).center();
+    const double first_at = page.core.object(5).center().y, third_at = page.core.object(7).center().y;
+    test::playScript(page, script, 61, 150);
+    CHECK(page.core.object(8).center() == fixed_at);
+    CHECK(page.core.object(5).center().y > first_at);
+    CHECK(page.core.object(7).center().y > third_at);
 }

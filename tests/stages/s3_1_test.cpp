@@ -13,6 +13,7 @@
 #include "physics.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
+#include "walkthrough.h"
 
 using browser::Key;
 using engine::Vec2;
@@ -136,4 +137,27 @@ TEST_CASE("s3_1: the overlay joins each pair the broad phase passed, and rings e
     const auto& legend = page.window.document.legend;
     REQUIRE(legend.size() == 3);
     CHECK(legend[2].text == "1 of 3 pairs passed");
+}
+
+// The README's walkthrough ("Play it live"): a rectangle (5) and a circle (6) at the
+// cursor, then the circle moved right 10 px a press, then the rectangle turned.
+TEST_CASE("s3_1: README walkthrough: green while the bounding circles overlap, and turning changes nothing") {
+    test::StageFixture page;
+    test::buildBookScene(page.core, page.random);
+    test::playScript(page, "f g", 1);
+    const engine::RigidShape& box = page.core.object(5);
+    const engine::RigidShape& ball = page.core.object(6);
+    CHECK(reported(page.core.physics(), 5, 6));
+    // Ten presses of D, 10 px each: the pair is reported exactly while the centres are
+    // no farther apart than the two bounding radii, and by the tenth (100 px) they are.
+    for (int press = 1; press <= 10; ++press) {
+        test::playScript(page, "6 d 0", 1);
+        const double apart = ball.center().x - box.center().x;
+        CHECK(apart == 10.0 * press);
+        CHECK(reported(page.core.physics(), 5, 6) == (apart <= box.boundRadius() + ball.boundRadius()));
+    }
+    CHECK_FALSE(reported(page.core.physics(), 5, 6));
+    // A bounding circle is the same at every angle: turning the box decides nothing.
+    test::playScript(page, "5 e*2 0", 1);
+    CHECK_FALSE(reported(page.core.physics(), 5, 6));
 }

@@ -2,10 +2,13 @@
 // collision as an orange line; only circles can collide yet.
 #include <catch2/catch.hpp>
 
+#include "book_scene.h"
 #include "circle.h"
 #include "physics.h"
 #include "rectangle.h"
+#include "near.h"
 #include "stage_fixture.h"
+#include "walkthrough.h"
 
 using engine::Vec2;
 
@@ -67,4 +70,21 @@ TEST_CASE("s3_2: a frame that runs no update draws no collision line") {
     CHECK(middle() == browser::colors::kOrange);
     page.frame();  // 25 ms: no step
     CHECK(middle() == browser::colors::kWhite);
+}
+
+// The README's walkthrough ("Play it live"): two circles 30 px apart, two rectangles.
+TEST_CASE("s3_2: README walkthrough: the two circles collide, the rectangles report nothing") {
+    test::StageFixture page;
+    test::buildBookScene(page.core, page.random);
+    test::playScript(page, "g d*3 g d*8 f d*2 f", 1);
+    const auto& first = static_cast<const engine::Circle&>(page.core.object(5));
+    const auto& second = static_cast<const engine::Circle&>(page.core.object(6));
+    REQUIRE(second.center().x - first.center().x == 30.0);
+    const auto& found = page.core.physics().collisions();
+    REQUIRE(found.size() == 1);
+    CHECK(found[0].first == 5);
+    CHECK(found[0].second == 6);
+    // Radii of 20 px and more, 30 px apart: they overlap by the radii minus 30, along +x.
+    CHECK_THAT(found[0].info.depth(), test::near(first.radius() + second.radius() - 30.0, 1e-12));
+    CHECK_THAT(found[0].info.normal(), test::near(Vec2{1, 0}, 1e-12));
 }

@@ -3,12 +3,14 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "near.h"
 #include "stage_fixture.h"
+#include "walkthrough.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -66,4 +68,27 @@ TEST_CASE("s4_1: a frame shows the world from before its update, with that updat
     CHECK(pixels.at(160, 100) == browser::colors::kWhite);
     // The pass ran before the ball moved: its line runs from 110.5 to 120.5.
     CHECK(pixels.at(115, 100) == browser::colors::kOrange);
+}
+
+// The README's walkthrough ("Play it live"): movement on, a rectangle (5) and a circle
+// (6) at the cursor, the circle thrown right at 60 px/s and up at 80 px/s.
+TEST_CASE("s4_1: README walkthrough: both fall under gravity, the circle flies a parabola through the box") {
+    test::ScratchFolder folder("s4_1_walkthrough");
+    const std::vector<test::DumpRow> rows = test::runWalkthrough(folder, "comma f g 6 l*60 i*80", 120);
+    constexpr double kGDt = 10.0 / 60.0;  // what one step of gravity adds to vy, px/s
+    for (const long step : {1L, 60L, 119L}) {
+        const test::DumpRow box = test::stateAt(rows, step, 5);
+        const test::DumpRow ball = test::stateAt(rows, step, 6);
+        // Symplectic Euler: after n steps gravity has added n g dt, to the box at rest
+        // and to the thrown circle alike.
+        CHECK_THAT(box.vy, test::near(step * kGDt, 1e-9));
+        CHECK_THAT(ball.vy, test::near(-80.0 + step * kGDt, 1e-9));
+        // Nothing answers collisions yet: the circle starts inside the box and keeps
+        // its sideways speed, exactly, through it.
+        CHECK(ball.vx == 60.0);
+        CHECK(box.vx == 0.0);
+    }
+    // Up first, then turning down: the top of the parabola is 80 / (g dt) = 480 steps
+    // away, so within the run the circle is still rising.
+    CHECK(test::stateAt(rows, 119, 6).cy < test::stateAt(rows, 60, 6).cy);
 }

@@ -2,12 +2,17 @@
 // velocities only, so nothing turns.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
 #include "near.h"
 #include "platform_check.h"
 #include "rectangle.h"
+#include "walkthrough.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -47,4 +52,30 @@ TEST_CASE("s4_3: an off-centre hit changes velocities only; nothing turns") {
     CHECK(box.angularVelocity() == 0);
     CHECK(box.angle() == 0);
     CHECK(ball.angularVelocity() == 0);
+}
+
+// The README's walkthrough ("Play it live"): a circle and a box sent down onto the
+// platform, then H at two seconds.
+TEST_CASE("s4_3: README walkthrough: the shapes land on the platform, slow down, and never turn") {
+    test::ScratchFolder folder("s4_3_walkthrough");
+    const std::vector<test::DumpRow> rows =
+        test::runWalkthrough(folder, "comma a*20 s*8 g 6 k*100 0 d*8 f 7 k*100 0 w*10 h@120", 240);
+    const auto state = [&rows](long step, std::size_t index) { return test::stateAt(rows, step, index); };
+    REQUIRE(state(1, 6).shape == "circle");
+    REQUIRE(state(1, 7).shape == "rectangle");
+    // Impulses act through the centres in this project: nothing ever turns.
+    for (const test::DumpRow& row : rows) {
+        CHECK(row.angle == 0.0);
+        CHECK(row.angular_velocity == 0.0);
+    }
+    // The platform's top is at y = 400 - 10. At step 60 both rest on it: above it, and
+    // their vertical speed is the one step of gravity, g dt = 10/60 px/s, that the
+    // contact takes away again each step.
+    for (const std::size_t shape : {std::size_t{6}, std::size_t{7}}) {
+        CHECK(state(60, shape).cy < 390.0);
+        CHECK_THAT(state(60, shape).vy, test::near(10.0 / 60.0, 1e-9));
+        CHECK_THAT(state(119, shape).vy, test::near(10.0 / 60.0, 1e-9));
+        // Friction slows the sliding between landing and H.
+        CHECK(std::abs(state(119, shape).vx) < std::abs(state(30, shape).vx));
+    }
 }

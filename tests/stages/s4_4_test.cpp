@@ -12,8 +12,7 @@
 #include "my_game.h"
 #include "platform_check.h"
 #include "rectangle.h"
-#include "scratch_folder.h"
-#include "stage_program.h"
+#include "walkthrough.h"
 #include "world_fixture.h"
 
 using engine::Vec2;
@@ -93,22 +92,13 @@ TEST_CASE("s4_4: the overlay draws the lever arms from both centres to the conta
 
 // The README's walkthrough ("Play it live"): with movement on, a circle is made low
 // over the steep platform and a box up to its left, each given 100 px/s downwards (K),
-// since gravity alone (10 px/s^2) would take seconds to bring them down.
+// since gravity alone (10 px/s^2) would take seconds to bring them down; then the
+// cursor moves out of the box's way.
 TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns as it lands") {
     test::ScratchFolder folder("s4_4_walkthrough");
-    const std::string script = "comma a*20 s*8 g 7 k*100 0 a*6 w*4 f 8 k*100 0";
-    const test::ProgramRun run = test::runStageProgram(
-        folder, "--keys \"" + script + "\" --frames 240 --every 30 --out " + test::quoted(folder.path / "out") +
-                    " --dump " + test::quoted(folder.path / "dump.csv"));
-    REQUIRE(run.status == 0);
-    const std::vector<test::DumpRow> rows = test::readDump(folder.path / "dump.csv");
-    const auto state = [&](long step, std::size_t index) {
-        for (const test::DumpRow& row : rows) {
-            if (row.step == step && row.index == index) return row;
-        }
-        FAIL("no row for step " << step << ", object " << index);
-        return test::DumpRow{};
-    };
+    const std::vector<test::DumpRow> rows =
+        test::runWalkthrough(folder, "comma a*20 s*8 g 7 k*100 0 a*4 w*4 f 8 k*100 0 w*10", 240);
+    const auto state = [&rows](long step, std::size_t index) { return test::stateAt(rows, step, index); };
     const long last = rows.back().step;
     REQUIRE(state(1, 7).shape == "circle");
     REQUIRE(state(1, 8).shape == "rectangle");
