@@ -45,28 +45,17 @@ public:
     virtual Snapshot snapshot() const = 0;
 
     // Pairs looked at per fixed step, every relaxation pass counted, on average over
-    // every step run (timed or not): those the broad phase considered (candidates) and
-    // those that reached the exact narrow-phase test. Nothing where the engine does not
-    // count them (stage 5.1, the book's, and Box2D).
+    // every step run (timed or not): those the broad phase considered (candidates), those
+    // whose exact narrow-phase test was computed, those whose exact test the skip rule
+    // saved (broad_phase.h), and the passes run. Nothing where the engine does not count
+    // them (stage 5.1, the book's, and Box2D).
     struct PairCounts {
         double candidates = 0.0;
         double narrow_tests = 0.0;
+        double skipped_tests = 0.0;
+        double passes = 0.0;
     };
     virtual std::optional<PairCounts> pair_counts() const { return std::nullopt; }
-
-    // Where a step's time goes, over `steps` steps run from the world as it stands. Before
-    // each step its relaxation passes are run twice on the world as it is, changing
-    // nothing: once with the broad phase alone (no pair goes further), once with the
-    // narrow phase too (no pair is resolved); then the step itself. So the broad phase
-    // costs `broad`, the narrow phase `narrow - broad`, and the resolution, with the
-    // rest of a step (moving the shapes), `step - narrow`. Seconds, summed over the
-    // steps. Nothing where the engine has no passes to take apart (Box2D).
-    struct PhaseSeconds {
-        double broad = 0.0;
-        double narrow = 0.0;
-        double step = 0.0;
-    };
-    virtual std::optional<PhaseSeconds> time_phases(long /*steps*/) { return std::nullopt; }
 
 protected:
     virtual void advance(long steps) = 0;

@@ -69,6 +69,8 @@ const std::vector<CsvColumn>& columns() {
         {"ms_per_simulated_s", [](const Row& r) { return number(r.ms_per_simulated_second()); }},
         {"candidate_pairs", [](const Row& r) { return number(r.candidate_pairs); }},
         {"narrow_tests", [](const Row& r) { return number(r.narrow_tests); }},
+        {"skipped_tests", [](const Row& r) { return number(r.skipped_tests); }},
+        {"passes", [](const Row& r) { return number(r.passes); }},
         {"penetration_max", [](const Row& r) { return number(r.metrics.penetration_max); }},
         {"penetration_mean", [](const Row& r) { return number(r.metrics.penetration_mean); }},
         {"top_drift", [](const Row& r) { return number(r.metrics.top_drift); }},

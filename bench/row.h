@@ -38,10 +38,13 @@ struct Row {
     long steps = 0;        // fixed steps in each timed run
     double cost_us = 0.0;  // median over the repeats of the microseconds per fixed step
     int repeats = 0;       // how many timed runs cost_us is the median of (runner.h)
-    // Per fixed step, all passes together (5.2 and 5.3, which count them): the pairs the
-    // broad phase looked at, and those of them that reached the exact narrow-phase test.
+    // Per fixed step, all passes together (5.2 on, which count them): the pairs the
+    // broad phase looked at, those whose exact narrow-phase test was computed, those
+    // whose exact test the skip rule saved, and the relaxation passes run.
     std::optional<double> candidate_pairs;
     std::optional<double> narrow_tests;
+    std::optional<double> skipped_tests;
+    std::optional<double> passes;
     Metrics metrics;
 
     double steps_per_second() const { return 1e6 / cost_us; }

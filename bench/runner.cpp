@@ -16,6 +16,8 @@ struct Runs {
     double cost_us = 0.0;
     std::optional<double> candidate_pairs;  // per step
     std::optional<double> narrow_tests;     // per step
+    std::optional<double> skipped_tests;    // per step
+    std::optional<double> passes;           // per step
     int repeats = 0;                        // timed runs made
 };
 
@@ -37,6 +39,8 @@ Runs run_repeats(const WorldMaker& make, const WorldDescription& settings, int r
             if (const auto counts = world->pair_counts()) {
                 runs.candidate_pairs = counts->candidates;
                 runs.narrow_tests = counts->narrow_tests;
+                runs.skipped_tests = counts->skipped_tests;
+                runs.passes = counts->passes;
             }
         }
     }
@@ -55,6 +59,8 @@ Row row_of(const RowSource& source, const Runs& runs) {
     row.repeats = runs.repeats;
     row.candidate_pairs = runs.candidate_pairs;
     row.narrow_tests = runs.narrow_tests;
+    row.skipped_tests = runs.skipped_tests;
+    row.passes = runs.passes;
     row.metrics = runs.metrics;
     return row;
 }

@@ -5,7 +5,6 @@
 // counts no pairs, 5.3 has sub-steps), the code asks the stage's types what they have
 // rather than which stage it is.
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -16,15 +15,6 @@
 #include "shape_outline.h"
 #include "stage_engine.h"
 
-// Stage 5.2 and later run their passes through a broad phase (broad_phase.h); the
-// book's 5.1 runs its own double loop.
-#if __has_include("broad_phase.h")
-#include "broad_phase.h"
-#define BENCH_STAGE_HAS_BROAD_PHASE 1
-#else
-#define BENCH_STAGE_HAS_BROAD_PHASE 0
-#endif
-
 namespace bench {
 namespace {
 
@@ -34,12 +24,16 @@ constexpr std::string_view kSource = "the bench's scene";
 int pixels(double size) { return static_cast<int>(std::ceil(size)); }
 
 // The pairs the physics handed to its passes over the last step, where it counts them
-// (5.2 on: pairStatistics); stage 5.1 is the book's and counts nothing.
+// (5.2 on: pairStatistics, the one thing the engine keeps for the bench alone: the
+// counts cannot be seen from outside, and cost an addition each); stage 5.1 is the
+// book's and counts nothing.
 template <class Physics>
 std::optional<BenchWorld::PairCounts> pairs_counted(const Physics& physics) {
     if constexpr (requires { physics.pairStatistics(); }) {
-        return BenchWorld::PairCounts{static_cast<double>(physics.pairStatistics().candidates),
-                                      static_cast<double>(physics.pairStatistics().narrow_tests)};
+        const auto& counted = physics.pairStatistics();
+        return BenchWorld::PairCounts{static_cast<double>(counted.candidates),
+                                      static_cast<double>(counted.narrow_tests),
+                                      static_cast<double>(counted.skipped_tests), static_cast<double>(counted.passes)};
     } else {
         return std::nullopt;
     }
@@ -82,17 +76,8 @@ public:
     std::optional<PairCounts> pair_counts() const override {
         if (!totals_ || steps_ == 0) return std::nullopt;
         const auto steps = static_cast<double>(steps_);
-        return PairCounts{totals_->candidates / steps, totals_->narrow_tests / steps};
-    }
-
-    std::optional<PhaseSeconds> time_phases(long steps) override {
-        PhaseSeconds seconds;
-        for (long step = 0; step < steps; ++step) {
-            seconds.broad += timed([&] { passes(false); });
-            seconds.narrow += timed([&] { passes(true); });
-            seconds.step += timed([&] { advance(1); });
-        }
-        return seconds;
+        return PairCounts{totals_->candidates / steps, totals_->narrow_tests / steps,
+                          totals_->skipped_tests / steps, totals_->passes / steps};
     }
 
 protected:
@@ -106,55 +91,18 @@ protected:
                 if (!totals_) totals_ = PairCounts{};
                 totals_->candidates += looks * pairs->candidates;
                 totals_->narrow_tests += looks * pairs->narrow_tests;
+                totals_->skipped_tests += looks * pairs->skipped_tests;
+                totals_->passes += looks * pairs->passes;
             }
         }
         steps_ += steps;
     }
 
 private:
-    template <class Work>
-    static double timed(Work&& work) {
-        const auto start = std::chrono::steady_clock::now();
-        work();
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-
-    // A step's relaxation passes over the world as it stands, with the broad phase and,
-    // when asked, the narrow phase, but no resolution: nothing moves. The pairs found
-    // are counted, so that the compiler cannot leave the tests out.
-    void passes(bool with_narrow_phase) {
-        const engine::WorldSettings& world = core_.settings();
-#if BENCH_STAGE_HAS_BROAD_PHASE
-        const auto narrow = [&](std::size_t i, std::size_t j) {
-            if (with_narrow_phase && engine::narrowPhase(core_.object(i), core_.object(j))) ++found_;
-            return false;
-        };
-        if (broad_phase_.kind() != world.broad_phase) broad_phase_ = engine::BroadPhase(world.broad_phase);
-        broad_phase_.startStep(core_.objects());
-        for (int pass = 0; pass < world.relaxation_iterations; ++pass) broad_phase_.pass(narrow);
-#else
-        const std::size_t count = core_.objectCount();
-        for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
-            for (std::size_t i = 0; i < count; ++i) {
-                for (std::size_t j = i + 1; j < count; ++j) {
-                    const engine::RigidShape& a = core_.object(i);
-                    const engine::RigidShape& b = core_.object(j);
-                    // (findCollision tests the bounding circles once more: a few ns.)
-                    if (a.boundTest(b) && with_narrow_phase && engine::findCollision(a, b)) ++found_;
-                }
-            }
-        }
-#endif
-    }
-
     browser::Window window_;
     engine::Core core_;
     std::optional<PairCounts> totals_;  // over steps_ steps; none where the stage counts none
     long steps_ = 0;
-#if BENCH_STAGE_HAS_BROAD_PHASE
-    engine::BroadPhase broad_phase_;  // time_phases' own, so that the engine's is left as it was
-#endif
-    long found_ = 0;
 };
 
 // The world as the stage reads it from the scene JSON of `world`.

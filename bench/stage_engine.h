@@ -1,6 +1,6 @@
 #pragma once
-// One chapter 5 stage's engine, as the bench drives it. Stages 5.1, 5.2 and 5.3 all
-// keep their engine in namespace engine under the same class names, so this interface
+// One chapter 5 stage's engine, as the bench drives it. Stages 5.1 to 5.4 all keep
+// their engine in namespace engine under the same class names, so this interface
 // names no engine type: each stage gets its own implementation, made by one adapter
 // (stage_adapter.cpp) compiled once per stage (bench/CMakeLists.txt says how), and the
 // rest of the bench sees only this.

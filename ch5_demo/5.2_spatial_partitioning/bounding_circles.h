@@ -10,16 +10,11 @@
 
 #include <cmath>
 #include <cstddef>
-#include <memory>
-#include <span>
 #include <vector>
 
 #include "rigid_shape.h"
 
 namespace engine {
-
-// The world's shapes, as the core keeps them.
-using ShapeList = std::span<const std::unique_ptr<RigidShape>>;
 
 class BoundingCircles {
 public:

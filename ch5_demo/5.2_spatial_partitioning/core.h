@@ -61,8 +61,6 @@ public:
     void keepFirstObjects(std::size_t count);
     RigidShape& object(std::size_t index) { return *all_objects_.at(index); }
     const RigidShape& object(std::size_t index) const { return *all_objects_.at(index); }
-    // Every object, as the physics walks them (the bench times the broad phase on them).
-    ShapeList objects() const { return all_objects_; }
 
     // The selected object (the book's gObjectNum): drawn red, echoed in the panel, and
     // the one the keys act on.

@@ -56,9 +56,10 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
 
 class Physics {
 public:
-    // world.relaxation_iterations passes, each testing every pair of shapes once and
-    // resolving each pair that collides (a pair of two static shapes is tested too, as
-    // in the book; only its resolution leaves it as it is).
+    // world.relaxation_iterations passes, each resolving every pair of shapes that
+    // collides, exactly as the book's passes do; but a pair whose answer is already
+    // known is not tested again (broad_phase.h), and a pass that changed nothing is the
+    // step's last (physics.cpp).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.

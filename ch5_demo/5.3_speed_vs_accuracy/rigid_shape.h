@@ -21,7 +21,9 @@
 // velocity that update() integrates, and the attributes the collision response will
 // use (mass, rotational inertia, friction, restitution).
 
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
@@ -127,5 +129,10 @@ protected:
     double friction_;
     double restitution_;
 };
+
+// The world's shapes, as the core keeps them and the physics and its broad phase walk
+// them (5.1 keeps this in physics.h; from 5.2 the broad phase needs it too, below the
+// physics).
+using ShapeList = std::span<const std::unique_ptr<RigidShape>>;
 
 }  // namespace engine

@@ -4,7 +4,7 @@
 #include <functional>
 #include <numeric>
 
-#include "physics.h"
+#include "narrow_phase.h"
 
 namespace engine {
 
@@ -93,7 +93,7 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, cons
     std::sort(last_index_.begin(), last_index_.end(), by_pair);
     persisted_ = 0;
 
-    broad_phase.startStep(shapes);
+    broad_phase.startStep(shapes, 1);
     broad_phase.pass([&](std::size_t i, std::size_t j) {
         const RigidShape& a = *shapes[i];
         const RigidShape& b = *shapes[j];

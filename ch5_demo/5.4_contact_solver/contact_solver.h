@@ -35,12 +35,11 @@
 #include "broad_phase.h"
 #include "collision_info.h"
 #include "contact_manifold.h"
+#include "narrow_phase.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
 
 namespace engine {
-
-struct Collision;
 
 // A velocity, straight and turning: the real one of a shape, or its pseudo velocity
 // (split impulses, below).

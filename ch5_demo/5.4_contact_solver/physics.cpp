@@ -74,11 +74,10 @@ double frictionImpulse(double sliding, double response, double jN, double restit
 // the impulse method, with rotation (Equations 4 to 6). Along the normal, the impulse
 // jN makes the contact points separate at e times the speed they met with (Newton's
 // law of restitution at the contact, Equation 4). Along the tangent, friction takes
-// away part of the sliding (see frictionImpulse; docs/errata.md, "Friction").
+// away part of the sliding (see frictionImpulse; docs/errata.md, "Friction"). Never
+// called for two static shapes: 1/mA + 1/mB = 0 would make every share below 0 / 0.
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
                       const WorldSettings& world) {
-    // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
-    if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
 
     const Vec2 normal = info.normal();  // from a to b
@@ -117,24 +116,11 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
 
 }  // namespace
 
-std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b) {
-    if (!a.boundTest(b)) return std::nullopt;
-    return narrowPhase(a, b);
-}
-
-std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& b) {
-    std::optional<CollisionInfo> info = a.collisionTest(b);
-    // A normal with a negative component along the line between the centres points
-    // from b towards a.
-    if (info && info->normal().dot(b.center() - a.center()) < 0) info->changeDir();
-    return info;
-}
-
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
     if (world.solver == SolverKind::sequential_impulse) return contact_solver_.step(shapes, broad_phase_, world, collisions_);
-    broad_phase_.startStep(shapes);
+    broad_phase_.startStep(shapes, world.relaxation_iterations);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
         // The record keeps what the last pass found.
         const bool last_pass = pass + 1 == world.relaxation_iterations;
@@ -142,18 +128,26 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
         // see the shapes where that correction left them. The broad phase walks each
         // row's partners in ascending order, so pairs are met in the book's order
         // whichever it is.
-        broad_phase_.pass([&](std::size_t i, std::size_t j) {
+        const bool changed = broad_phase_.pass([&](std::size_t i, std::size_t j) {
             RigidShape& a = *shapes[i];
             RigidShape& b = *shapes[j];
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) return false;
-            // Nothing draws the record from 4.3 on: it keeps the pairs the resolution
-            // works on, for the tests, so two static shapes lying in each other are
-            // left out of it.
-            if (last_pass && !(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
+            // Nothing moves two static shapes lying in each other, so the pair changes
+            // nothing. Nothing draws the record from 4.3 on: it keeps the pairs the
+            // resolution works on, for the tests, and leaves such a pair out.
+            if (a.isStatic() && b.isStatic()) return false;
+            if (last_pass) collisions_.push_back({i, j, *info});
             resolveCollision(a, b, *info, world);
             return true;
         });
+        // The book runs every pass. But a pass that changed nothing left every shape's
+        // position and velocity as it found them, and a pass reads nothing else: the
+        // next pass would meet the same pairs in the same state, find the same
+        // collisions, all of two static shapes, and change nothing either; and so on to
+        // the last, whose record would hold none of them. So the step's passes end here,
+        // with the record as empty as the last pass would have left it.
+        if (!changed) break;
     }
 }
 

@@ -31,39 +31,23 @@
 // From 4.3 on the book's pass no longer draws the collision info. Ours still records
 // what the last relaxation pass found, for the tests to read.
 
-#include <cstddef>
-#include <memory>
-#include <optional>
-#include <span>
 #include <vector>
 
 #include "broad_phase.h"
-#include "collision_info.h"
 #include "contact_solver.h"
+#include "narrow_phase.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
 
 namespace engine {
 
-// Two shapes the pass found colliding, by their places in the list; first < second.
-struct Collision {
-    std::size_t first;
-    std::size_t second;
-    CollisionInfo info;  // its normal points from the first shape towards the second
-};
-
-// The narrow phase. The info's normal is turned, where needed, to point from `a`
-// towards `b`, whichever shape's test worked it out.
-std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& b);
-// The book's broad phase, the bounding circles, then the narrow phase.
-std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b);
-
 class Physics {
 public:
-    // world.relaxation_iterations passes, each testing every pair of shapes once and
-    // resolving each pair that collides (a pair of two static shapes is tested too, as
-    // in the book; only its resolution leaves it as it is). With the sequential impulse
-    // solver: one look at every pair, then the solver (contact_solver.h).
+    // world.relaxation_iterations passes, each resolving every pair of shapes that
+    // collides, exactly as the book's passes do; but a pair whose answer is already
+    // known is not tested again (broad_phase.h), and a pass that changed nothing is the
+    // step's last (physics.cpp). With the sequential impulse solver: one look at every
+    // pair, then the solver (contact_solver.h).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
     // The pairs the broad phase handed out over the last collision() call.

@@ -11,10 +11,7 @@ namespace {
 // acceleration is always 0. update() still adds it, to show that turning takes the
 // same two steps as moving.
 constexpr double kAngularAcceleration = 0.0;  // rad/s^2
-}  // namespace
 
-// Every shape starts unturned and at rest; angle_ keeps count of the turns that follow.
-namespace {
 [[noreturn]] void refuse(std::string_view name, std::string_view rule, double got) {
     std::ostringstream message;
     message << name << " must be " << rule << " (got " << got << ")";

@@ -24,17 +24,16 @@ browser::ShapeKind kindOf(const RigidShape& shape) {
 
 }  // namespace
 
-// Every sub-step runs every pass: 1000 keeps a step's work bounded.
-constexpr browser::NumberRule kSubsteps{[](double v) { return v >= 1.0 && v <= 1000.0 && std::floor(v) == v; },
-                                        "must be a whole number in [1, 1000]"};
+// Sub-steps and the solver's velocity sweeps: each runs a share of a step's work again,
+// at least once; 1000 keeps a step's work bounded.
+constexpr browser::NumberRule kRepeats{[](double v) { return v >= 1.0 && v <= 1000.0 && std::floor(v) == v; },
+                                       "must be a whole number in [1, 1000]"};
 
 // A slop of more than a few pixels would let shapes sink visibly; 100 keeps typos out.
 constexpr browser::NumberRule kSlopRule{[](double v) { return v >= 0.0 && v <= 100.0; },
                                         "must be a number of px in [0, 100]"};
 constexpr browser::NumberRule kSpeedRule{[](double v) { return std::isfinite(v) && v >= 0.0; },
                                          "must be a finite speed >= 0"};
-constexpr browser::NumberRule kIterations{[](double v) { return v >= 1.0 && v <= 1000.0 && std::floor(v) == v; },
-                                          "must be a whole number in [1, 1000]"};
 
 std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
     namespace rules = browser::rules;
@@ -52,7 +51,7 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
          {{"bounding_circle", BroadPhaseKind::bounding_circle},
           {"all_pairs", BroadPhaseKind::all_pairs},
           {"grid", BroadPhaseKind::grid}}},
-        {"substeps", world.substeps, kSubsteps},
+        {"substeps", world.substeps, kRepeats},
         {"integrator", world.integrator,
          {{"symplectic", Integrator::symplectic}, {"explicit", Integrator::explicit_euler}}},
         {"friction_model", world.friction_model,
@@ -61,7 +60,7 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
         {"friction", world.friction},
         {"solver", world.solver,
          {{"book", SolverKind::book}, {"sequential_impulse", SolverKind::sequential_impulse}}},
-        {"velocity_iterations", world.velocity_iterations, kIterations},
+        {"velocity_iterations", world.velocity_iterations, kRepeats},
         {"position_iterations", world.position_iterations, rules::kPassCount},
         {"warm_starting", world.warm_starting},
         {"restitution_threshold", world.restitution_threshold, kSpeedRule},
