@@ -45,7 +45,7 @@ int run_bench(const BenchOptions& options, std::ostream& out, std::ostream& err)
     try {
         // Made first, so that a folder that may not be replaced stops the run before
         // minutes of measuring.
-        browser::OutputFolder folder(target, kResultsCsv);
+        browser::OutputFolder folder(target);
         if (!box2d_available()) out << kNoBox2d << '\n';
 
         const StudyContext context{.quick = options.quick, .repeats = options.repeats, .scenes_dir = BENCH_SCENES_DIR};

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -132,6 +133,11 @@ private:
     std::unique_ptr<GifWriter> gif_;
 };
 
+std::string out_of_memory_text() {
+    return "out of memory: the run needs more memory than this machine gives it (fewer shapes, frames or "
+           "pictures, or a smaller canvas); nothing was written";
+}
+
 // How the budget's figure reads in a message: "3.21e+10".
 std::string rounded(double value) {
     char text[32];
@@ -149,28 +155,67 @@ double most_shapes(const StepCost& step, const Options& options) {
 // "1 frame", "480 frames".
 std::string frames_text(int frames) { return std::to_string(frames) + (frames == 1 ? " frame" : " frames"); }
 
-// Why a run goes over its budget, in one line, or nothing when it does not.
+// The pixels of one saved page: the canvas and the echo panel, times --scale each way.
+double page_pixels(const Canvas& canvas) {
+    return static_cast<double>(canvas.width() + kPanelWidth) * canvas.scale() * static_cast<double>(canvas.height()) *
+           canvas.scale();
+}
+
+// How many of `frames` frames are taken when every `every`-th is, from frame 0 on.
+double frames_taken(int frames, int every) { return every > 0 ? static_cast<double>((frames - 1) / every + 1) : 0.0; }
+
+std::optional<std::string> page_excess(const Canvas& canvas) {
+    if (page_pixels(canvas) <= kMaxDevicePixels) return std::nullopt;
+    const int scale = canvas.scale();
+    return "the page is too large: " + std::to_string((canvas.width() + kPanelWidth) * scale) + " x " +
+           std::to_string(canvas.height() * scale) + " device pixels (the canvas and the " +
+           std::to_string(kPanelWidth) + " px panel beside it) at --scale " + std::to_string(scale) +
+           ", more than the " + std::to_string(static_cast<long>(kMaxDevicePixels)) +
+           " a page may have (a smaller canvas or --scale)";
+}
+
+std::optional<std::string> drawing_excess(const Canvas& canvas, const Options& options) {
+    const double drawn = page_pixels(canvas) * options.frames;
+    if (drawn <= kMaxPixelsDrawn) return std::nullopt;
+    return "the run is too long: " + frames_text(options.frames) + " of " + rounded(page_pixels(canvas)) +
+           " device pixels draw " + rounded(drawn) + " pixels, more than the " + rounded(kMaxPixelsDrawn) +
+           " a run may (fewer --frames, a smaller canvas or --scale)";
+}
+
+std::optional<std::string> pair_excess(const StepCost& step, const Options& options) {
+    const double tests = pair_test_bound(step, options);
+    if (tests <= kMaxPairTests) return std::nullopt;
+    return "the run is too long: " + frames_text(options.frames) + " of up to " +
+           std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
+           " pair tests, more than the " + rounded(kMaxPairTests) +
+           " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";
+}
+
+std::optional<std::string> memory_excess(const StepCost& step, const Options& options) {
+    const double bytes = contact_memory_bound(step, options);
+    if (bytes <= kMaxContactBytes) return std::nullopt;
+    return "the run may need too much memory: up to " + std::to_string(static_cast<long>(most_shapes(step, options))) +
+           " shapes all in contact may hold " + std::to_string(std::lround(bytes / 1e6)) +
+           " MB of contacts, more than the " + std::to_string(std::lround(kMaxContactBytes / 1e6)) +
+           " MB a run may (fewer shapes or key presses that add them)";
+}
+
+std::optional<std::string> encoding_excess(const Canvas& canvas, const Options& options) {
+    const double pixels = encoding_bound(page_pixels(canvas), options);
+    if (pixels <= kMaxPixelsEncoded) return std::nullopt;
+    return "the run is too long: its pictures and GIF frames may cost " + rounded(pixels) +
+           " pixels to encode, more than the " + rounded(kMaxPixelsEncoded) +
+           " a run may (a larger --every or --gif-every, --no-gif, a smaller canvas or --scale)";
+}
+
+// Why a run goes over its budget, in one line, or nothing when it does not: the first
+// limit it passes, in the order of browser.h.
 std::optional<std::string> over_budget(const StepCost& step, const Canvas& canvas, const Options& options) {
-    const double device_pixels = static_cast<double>(canvas.width()) * canvas.scale() *
-                                 static_cast<double>(canvas.height()) * canvas.scale();
-    std::string excess;
-    if (device_pixels > kMaxDevicePixels) {
-        excess = "the page is too large: " + std::to_string(canvas.width() * canvas.scale()) + " x " +
-                 std::to_string(canvas.height() * canvas.scale()) + " device pixels at --scale " +
-                 std::to_string(canvas.scale()) + ", more than the " +
-                 std::to_string(static_cast<long>(kMaxDevicePixels)) + " a page may have (a smaller canvas or --scale)";
-    } else if (const double drawn = device_pixels * options.frames; drawn > kMaxPixelsDrawn) {
-        excess = "the run is too long: " + frames_text(options.frames) + " of " + rounded(device_pixels) +
-                 " device pixels draw " + rounded(drawn) + " pixels, more than the " + rounded(kMaxPixelsDrawn) +
-                 " a run may (fewer --frames, a smaller canvas or --scale)";
-    } else if (const double tests = pair_test_bound(step, options); tests > kMaxPairTests) {
-        excess = "the run is too long: " + frames_text(options.frames) + " of up to " +
-                 std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
-                 " pair tests, more than the " + rounded(kMaxPairTests) +
-                 " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";
-    }
-    if (excess.empty()) return std::nullopt;
-    return excess;
+    if (auto excess = page_excess(canvas)) return excess;
+    if (auto excess = drawing_excess(canvas, options)) return excess;
+    if (auto excess = pair_excess(step, options)) return excess;
+    if (auto excess = memory_excess(step, options)) return excess;
+    return encoding_excess(canvas, options);
 }
 
 }  // namespace
@@ -185,17 +230,26 @@ double pair_test_bound(const StepCost& step, const Options& options) {
     return steps * std::max(step.substeps, 1) * per_substep + drawn;
 }
 
-Window::Window(const Options& options, Document page) : Window(options.frame_ms, std::move(page)) {
-    document.canvas.setScale(options.scale);
-    overlay = options.overlay;
+double contact_memory_bound(const StepCost& step, const Options& options) {
+    const double shapes = most_shapes(step, options);
+    return shapes * (shapes - 1.0) / 2.0 * step.bytes_a_contact;
 }
 
-void press_key(PageScripts& scripts, Window& window, const Options& options, Key key) {
-    if (options.overlay_offered && key == kOverlayKey) {
-        window.overlay = !window.overlay;
-    } else {
-        scripts.onKeyDown(key);
+double encoding_bound(double page_pixels, const Options& options) {
+    // The contact sheet holds every saved page at a quarter of its pixels or less.
+    const double pictures = 1.0 + frames_taken(options.frames, options.every) * 1.25;
+    const double gif_frames = options.gif ? frames_taken(options.frames, options.gif_every) : 0.0;
+    return page_pixels * (pictures + kGifPixelCost * gif_frames);
+}
+
+bool is_picture_name(std::string_view name) {
+    if (name == kFinalPicture || name == kContactSheet || name == kAnimation || name == kUnfinishedAnimation) return true;
+    constexpr std::string_view kPrefix = "frame_", kSuffix = ".png";
+    if (!name.starts_with(kPrefix) || !name.ends_with(kSuffix) || name.size() <= kPrefix.size() + kSuffix.size()) {
+        return false;
     }
+    const std::string_view number = name.substr(kPrefix.size(), name.size() - kPrefix.size() - kSuffix.size());
+    return number.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
 int run(PageScripts& scripts, Window& window, const Options& options) {
@@ -208,6 +262,7 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         throw std::invalid_argument("browser::run: the window's canvas scale is not options.scale (make it with Window(options))");
     }
     if (options.live.on) {
+        note_interruptions();  // a live session ends by SIGINT or SIGTERM as a run does
         try {
             const std::unique_ptr<Screen> screen = open_live_window(
                 {.title = options.live.title, .frame_ms = options.frame_ms, .events = options.live.events,
@@ -216,6 +271,9 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         } catch (const LiveWindowError& error) {
             std::cerr << error.what() << '\n';
             return 1;
+        } catch (const std::bad_alloc&) {
+            std::cerr << out_of_memory_text() << '\n';
+            return kOutOfMemoryStatus;
         }
     }
     if (options.gif && !gif_supported()) {
@@ -231,7 +289,7 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
     const fs::path out = OutputFolder::normalized(options.out_dir);
     std::string reason;
     try {
-        OutputFolder folder(out, kFinalPicture);
+        OutputFolder folder(out, files_read(options));
         Recorder recorder(options, folder.staging());
         for (int k = 0; k < options.frames; ++k) {
             clock.advanceFrame();
@@ -251,6 +309,9 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         reason = error.what();
     } catch (const fs::filesystem_error& error) {
         reason = error.code().message();
+    } catch (const std::bad_alloc&) {
+        std::cerr << out_of_memory_text() << '\n';
+        return kOutOfMemoryStatus;
     }
     // A failing page script is not ours to report: its exception goes on, and the
     // output folder's staging folder is gone all the same.

@@ -2,42 +2,19 @@
 // The browser session: it gives the page's scripts a window (the document with its
 // canvas and echo panel, and the clock behind Date.now()), presses the scripted keys,
 // calls the scripts back every animation frame, and saves the page as PNG pictures.
+// The page's side of it (Window, PageScripts) is page_scripts.h, which the live session
+// (live.h) shares: it plays the same page, and browser::run hands it over with --live.
 
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 #include <utility>
 
-#include "clock.h"
 #include "command_line.h"
-#include "keys.h"
-#include "page.h"
+#include "page_scripts.h"
 
 namespace browser {
-
-// What the page's scripts can reach: window.document and Date.now().
-struct Window {
-    explicit Window(double frame_ms, Document page = Document()) : document(std::move(page)), clock(frame_ms) {}
-    // A stage's window: the clock runs at options.frame_ms, and the canvas has
-    // options.scale device pixels a unit (--scale), which blanks it.
-    explicit Window(const Options& options, Document page = Document());
-    Document document;
-    Clock clock;
-    // Whether the page draws its overlay (overlay_draw.h) this frame: set from --overlay,
-    // turned by kOverlayKey. The page reads it; the browser owns it, as it owns the
-    // clock, so the page's own scripts stay the book's.
-    bool overlay = false;
-};
-
-// What one fixed step of a page's world costs at most, for the run's budget: every
-// step tests every pair of shapes once a collision pass, `passes` times a sub-step; and
-// a page that draws the collisions it found (chapter 3 to 4.2) draws a line a pair.
-struct StepCost {
-    double dt_s = 1.0 / 60.0;  // the fixed step, s
-    int substeps = 1;
-    int passes = 1;            // collision passes a sub-step (0 counts as 1: the pairs are still found)
-    std::size_t shapes = 0;    // at the start; each F or G press may add one more
-    bool draws_pairs = true;   // every frame draws a line for every pair that collides
-};
 
 // The budget of a run, so that every run fits in memory and ends in minutes
 // (docs/scene_format.md, "Limits", has the worst case measured):
@@ -45,9 +22,16 @@ struct StepCost {
 //  - the pixels drawn over the whole run, frames times device pixels, as every frame
 //    clears and draws the whole canvas;
 //  - the pair tests of the whole run (pair_test_bound).
+//  - the memory of the contacts of the most pairs the run can have (contact_memory_bound);
+//  - the pixels encoded into PNG pictures and GIF frames (encoding_bound).
 inline constexpr double kMaxDevicePixels = 4096.0 * 4096.0;
 inline constexpr double kMaxPixelsDrawn = 5e11;
 inline constexpr double kMaxPairTests = 5e9;
+inline constexpr double kMaxContactBytes = 400e6;
+inline constexpr double kMaxPixelsEncoded = 2e9;
+// A pixel of a GIF frame costs about a tenth of a pixel of a PNG picture to encode
+// (measured at --scale 4: 11 ns against 110 ns; stb's PNG encoder tries every filter).
+inline constexpr double kGifPixelCost = 0.1;
 // Drawing a pair's collision line costs about as much as this many pair tests (a line
 // across a few hundred pixels against a separating-axis test, measured).
 inline constexpr double kDrawnPairCost = 1000.0;
@@ -58,20 +42,22 @@ inline constexpr double kDrawnPairCost = 1000.0;
 // kDrawnPairCost a pair a frame.
 double pair_test_bound(const StepCost& step, const Options& options);
 
-// What a stage's index.html registers with the browser.
-class PageScripts {
-public:
-    virtual ~PageScripts() = default;
-    virtual void onKeyDown(Key key) = 0;  // <body onkeydown="userControl(event)">
-    virtual void onAnimationFrame() = 0;  // the requestAnimationFrame callback
-    // For the budget: a page that says nothing counts as one pass a 1/60 s step over
-    // the shapes its key presses make.
-    virtual StepCost stepCost() const { return {}; }
-};
+// An upper bound of the bytes the contacts of a step can hold: the pairs of the most
+// shapes the run can have, every one in contact, times step.bytes_a_contact.
+double contact_memory_bound(const StepCost& step, const Options& options);
 
-// A key press reaching the page: on a stage with an overlay, kOverlayKey turns
-// window.overlay on or off; every other key goes to the page's onKeyDown.
-void press_key(PageScripts& scripts, Window& window, const Options& options, Key key);
+// The pixels a run encodes, in PNG pixels: final.png, the frame_NNNN.png pictures and the
+// contact sheet, and kGifPixelCost for each pixel of each GIF frame. `page_pixels` is the
+// size of one saved page (the canvas and the echo panel beside it, times --scale squared).
+double encoding_bound(double page_pixels, const Options& options);
+
+// The names a run gives the files of its folder (final.png, frame_NNNN.png,
+// contact_sheet.png, animation.gif and its partial file).
+bool is_picture_name(std::string_view name);
+
+// The exit status of a run that ran out of memory although its budget let it start (a
+// machine with less memory than the budget allows for): one line on stderr, nothing written.
+inline constexpr int kOutOfMemoryStatus = 4;
 
 // Runs options.frames (>= 1) frames. Before frame k the clock advances by one frame,
 // the keys scripted for frame k are pressed, then the animation frame runs. The page is
@@ -86,12 +72,15 @@ void press_key(PageScripts& scripts, Window& window, const Options& options, Key
 // cannot be written; 2 with one line, before anything is written, when the run is
 // refused: options.gif asks for a GIF that this build cannot write (build_features.h's
 // kNoGifSupport), options.out_dir may not be replaced (output_folder.h), or the run
-// would go over its budget (kMaxDevicePixels, kMaxPixelsDrawn, kMaxPairTests).
+// would go over its budget (kMaxDevicePixels to kMaxPixelsEncoded); kOutOfMemoryStatus
+// with one line when memory runs out all the same.
 // SIGINT and SIGTERM end a run after the frame they come in, with the staging folder
 // and every partial file removed (interruption.h).
 // With options.live.on it plays the page in a window instead (live.h), writing no
 // pictures: 0 when the reader closes it, 1 with one line when no window can be opened
-// or the recorded key script or screenshot cannot be written.
+// (no display named at all, live_window.h) or the recorded key script or screenshot
+// cannot be written, 2 when --record names a place write_guard.h refuses; SIGINT and
+// SIGTERM end it as they end a run.
 int run(PageScripts& scripts, Window& window, const Options& options);
 
 }  // namespace browser

@@ -105,6 +105,96 @@ std::uint8_t mix(std::uint8_t from, std::uint8_t to, double alpha) {
     return static_cast<std::uint8_t>(from + (to - from) * alpha + 0.5);  // rounded: never below 0
 }
 
+// A coverage mask over the pixels the pen can reach: for each, how much of it the
+// stroke covers, from 0 to 1. Where segments meet, or an arc's short chords overlap, a
+// pixel lies near several segments, but the pen passes over it once: each pixel keeps
+// its largest coverage, not the sum.
+struct CoverageMask {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;  // the device pixels [i0, i1) x [j0, j1)
+    std::vector<float> coverage;         // row by row; empty when the box is
+    float* row(int j) {
+        return &coverage[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(i1 - i0)];
+    }
+    float at(int i, int j) const {
+        return coverage[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(i1 - i0) +
+                        static_cast<std::size_t>(i - i0)];
+    }
+};
+
+// Raises the mask's pixels to the coverage of one segment of the path.
+void cover_segment(CoverageMask& mask, const Segment& s, double reach, int device_width, int device_height) {
+    const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+    const double length_squared = dx * dx + dy * dy;
+    const int j0 = std::max(mask.j0, first_pixel(std::min(s.y0, s.y1) - reach, device_height));
+    const int j1 = std::min(mask.j1, end_pixel(std::max(s.y0, s.y1) + reach, device_height));
+    for (int j = j0; j < j1; ++j) {
+        // Only the part of the segment within reach of this row's centre line can
+        // light pixels of the row: find its x extent, so a long slanted segment costs
+        // a few pixels per row rather than its whole bounding box.
+        const double cy = j + 0.5;
+        double t_low = 0.0, t_high = 1.0;
+        if (dy != 0.0) {
+            const double ta = (cy - reach - s.y0) / dy, tb = (cy + reach - s.y0) / dy;
+            t_low = std::max(0.0, std::min(ta, tb));
+            t_high = std::min(1.0, std::max(ta, tb));
+            if (t_low > t_high) continue;
+        }
+        const double xa = s.x0 + t_low * dx, xb = s.x0 + t_high * dx;
+        const int i0 = std::max(mask.i0, first_pixel(std::min(xa, xb) - reach, device_width));
+        const int i1 = std::min(mask.i1, end_pixel(std::max(xa, xb) + reach, device_width));
+        float* row = mask.row(j);
+        for (int i = i0; i < i1; ++i) {
+            // Distance from the pixel centre to the nearest point of the segment: project
+            // onto the segment's line and stop at its ends. (So ends and joins come out
+            // round, where the browser's are flat and mitred: for a 1 px pen the two
+            // differ by less than half a pixel, at the very ends.)
+            const double px = i + 0.5 - s.x0, py = cy - s.y0;
+            const double t = std::clamp((px * dx + py * dy) / length_squared, 0.0, 1.0);
+            const double ex = px - t * dx, ey = py - t * dy;
+            const double distance_squared = ex * ex + ey * ey;
+            if (distance_squared >= reach * reach) continue;
+            const float c = static_cast<float>(1.0 - std::sqrt(distance_squared) / reach);
+            float& cell = row[i - mask.i0];
+            cell = std::max(cell, c);
+        }
+    }
+}
+
+// The mask of a whole path of (non-empty) segments, over their box grown by the reach.
+CoverageMask coverage_mask(const std::vector<Segment>& segments, double reach, int device_width, int device_height) {
+    double left = segments[0].x0, right = left, top = segments[0].y0, bottom = top;
+    for (const Segment& s : segments) {
+        left = std::min({left, s.x0, s.x1});
+        right = std::max({right, s.x0, s.x1});
+        top = std::min({top, s.y0, s.y1});
+        bottom = std::max({bottom, s.y0, s.y1});
+    }
+    CoverageMask mask{.i0 = first_pixel(left - reach, device_width),
+                      .i1 = end_pixel(right + reach, device_width),
+                      .j0 = first_pixel(top - reach, device_height),
+                      .j1 = end_pixel(bottom + reach, device_height)};
+    if (mask.i0 >= mask.i1 || mask.j0 >= mask.j1) return mask;
+    mask.coverage.assign(static_cast<std::size_t>(mask.i1 - mask.i0) * static_cast<std::size_t>(mask.j1 - mask.j0),
+                         0.0f);
+    for (const Segment& s : segments) cover_segment(mask, s, reach, device_width, device_height);
+    return mask;
+}
+
+// Paints the pen's colour over each pixel once, in proportion to its coverage ("source
+// over": the colour's own alpha scales the coverage).
+void paint(Image& pixels, const CoverageMask& mask, Color pen) {
+    for (int j = mask.j0; j < mask.j1; ++j) {
+        for (int i = mask.i0; i < mask.i1; ++i) {
+            const float c = mask.at(i, j);
+            if (c <= 0.0f) continue;
+            const double alpha = c * (pen.a / 255.0);
+            const Color under = pixels.at(i, j);
+            pixels.set(i, j, {mix(under.r, pen.r, alpha), mix(under.g, pen.g, alpha),
+                              mix(under.b, pen.b, alpha), mix(under.a, 255, alpha)});
+        }
+    }
+}
+
 }  // namespace
 
 Canvas::Canvas(int width, int height, int scale) : width_(width), height_(height), scale_(1) {
@@ -229,76 +319,9 @@ void Canvas::stroke() {
     }
     if (segments.empty()) return;
 
-    // 2. A coverage mask over the pixels the pen can reach. Where segments meet, or an
-    //    arc's short chords overlap, a pixel lies near several segments, but the pen
-    //    passes over it once: each pixel keeps its largest coverage, not the sum.
-    double left = segments[0].x0, right = left, top = segments[0].y0, bottom = top;
-    for (const Segment& s : segments) {
-        left = std::min({left, s.x0, s.x1});
-        right = std::max({right, s.x0, s.x1});
-        top = std::min({top, s.y0, s.y1});
-        bottom = std::max({bottom, s.y0, s.y1});
-    }
-    const int mask_i0 = first_pixel(left - reach, device_width);
-    const int mask_i1 = end_pixel(right + reach, device_width);
-    const int mask_j0 = first_pixel(top - reach, device_height);
-    const int mask_j1 = end_pixel(bottom + reach, device_height);
-    if (mask_i0 >= mask_i1 || mask_j0 >= mask_j1) return;
-    const int mask_width = mask_i1 - mask_i0;
-    std::vector<float> coverage(static_cast<std::size_t>(mask_width) * static_cast<std::size_t>(mask_j1 - mask_j0), 0.0f);
-
-    for (const Segment& s : segments) {
-        const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
-        const double length_squared = dx * dx + dy * dy;
-        const int j0 = std::max(mask_j0, first_pixel(std::min(s.y0, s.y1) - reach, device_height));
-        const int j1 = std::min(mask_j1, end_pixel(std::max(s.y0, s.y1) + reach, device_height));
-        for (int j = j0; j < j1; ++j) {
-            // Only the part of the segment within reach of this row's centre line can
-            // light pixels of the row: find its x extent, so a long slanted segment costs
-            // a few pixels per row rather than its whole bounding box.
-            const double cy = j + 0.5;
-            double t_low = 0.0, t_high = 1.0;
-            if (dy != 0.0) {
-                const double ta = (cy - reach - s.y0) / dy, tb = (cy + reach - s.y0) / dy;
-                t_low = std::max(0.0, std::min(ta, tb));
-                t_high = std::min(1.0, std::max(ta, tb));
-                if (t_low > t_high) continue;
-            }
-            const double xa = s.x0 + t_low * dx, xb = s.x0 + t_high * dx;
-            const int i0 = std::max(mask_i0, first_pixel(std::min(xa, xb) - reach, device_width));
-            const int i1 = std::min(mask_i1, end_pixel(std::max(xa, xb) + reach, device_width));
-            float* row = &coverage[static_cast<std::size_t>(j - mask_j0) * static_cast<std::size_t>(mask_width)];
-            for (int i = i0; i < i1; ++i) {
-                // Distance from the pixel centre to the nearest point of the segment: project
-                // onto the segment's line and stop at its ends. (So ends and joins come out
-                // round, where the browser's are flat and mitred: for a 1 px pen the two
-                // differ by less than half a pixel, at the very ends.)
-                const double px = i + 0.5 - s.x0, py = cy - s.y0;
-                const double t = std::clamp((px * dx + py * dy) / length_squared, 0.0, 1.0);
-                const double ex = px - t * dx, ey = py - t * dy;
-                const double distance_squared = ex * ex + ey * ey;
-                if (distance_squared >= reach * reach) continue;
-                const float c = static_cast<float>(1.0 - std::sqrt(distance_squared) / reach);
-                float& cell = row[i - mask_i0];
-                cell = std::max(cell, c);
-            }
-        }
-    }
-
-    // 3. Paint the stroke colour over each pixel once, in proportion to its coverage
-    //    ("source over": the colour's own alpha scales the coverage).
-    const Color pen = stroke_color_;
-    for (int j = mask_j0; j < mask_j1; ++j) {
-        for (int i = mask_i0; i < mask_i1; ++i) {
-            const float c = coverage[static_cast<std::size_t>(j - mask_j0) * static_cast<std::size_t>(mask_width) +
-                                     static_cast<std::size_t>(i - mask_i0)];
-            if (c <= 0.0f) continue;
-            const double alpha = c * (pen.a / 255.0);
-            const Color under = pixels_.at(i, j);
-            pixels_.set(i, j, {mix(under.r, pen.r, alpha), mix(under.g, pen.g, alpha),
-                               mix(under.b, pen.b, alpha), mix(under.a, 255, alpha)});
-        }
-    }
+    // 2. How much of each pixel within the pen's reach the path covers; 3. the paint.
+    const CoverageMask mask = coverage_mask(segments, reach, device_width, device_height);
+    if (!mask.coverage.empty()) paint(pixels_, mask, stroke_color_);
 }
 
 void Canvas::strokeRect(double x, double y, double w, double h) {

@@ -379,4 +379,13 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
     }
 }
 
+std::vector<std::filesystem::path> files_read(const Options& options) {
+    std::vector<std::filesystem::path> files;
+    if (const auto scene = options.extra.find("--scene"); scene != options.extra.end() && !scene->second.empty()) {
+        files.emplace_back(scene->second);
+    }
+    if (!options.live.events.empty()) files.push_back(options.live.events);
+    return files;
+}
+
 }  // namespace browser

@@ -108,4 +108,8 @@ struct ParsedCommandLine {
 
 ParsedCommandLine parse_command_line(int argc, const char* const* argv, const StageDefaults& defaults);
 
+// The files a run reads (its --scene, its --live-events), which nothing it writes may
+// be or hold (write_guard.h).
+std::vector<std::filesystem::path> files_read(const Options& options);
+
 }  // namespace browser

@@ -7,7 +7,9 @@
 // that cannot be read or written.
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -19,7 +21,10 @@
 #include <CLI/CLI.hpp>
 
 #include "image_compare.h"
+#include "message_text.h"
+#include "output_folder.h"  // kManifest
 #include "png_io.h"
+#include "write_guard.h"
 
 namespace fs = std::filesystem;
 
@@ -37,6 +42,29 @@ struct Settings {
 
 std::string size_text(const browser::Image& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+// Whether this program wrote DIR/name before: --diff-dir lists the diff pictures it
+// writes in DIR's manifest (output_folder.h's format), and removes only those.
+bool wrote_before(const fs::path& file) {
+    std::ifstream manifest(file.parent_path() / browser::kManifest);
+    for (std::string line; std::getline(manifest, line);) {
+        if (line == file.filename().string()) return true;
+    }
+    return false;
+}
+
+// An old diff picture would mislead once the pictures match: removed when this program
+// wrote it and it is still a plain file (write_guard.h's rule), never what a link leads to.
+void remove_old_diff(const fs::path& file) {
+    if (!wrote_before(file)) return;
+    try {
+        browser::check_may_write(file, browser::WriteTarget::file);
+    } catch (const browser::OutputRefused&) {
+        return;
+    }
+    std::error_code ignored;
+    fs::remove(file, ignored);
 }
 
 // Compares one pair, prints its line and writes the diff picture where asked.
@@ -65,15 +93,26 @@ int compare_pair(const std::string& name, const fs::path& expected_path, const f
     if (!settings.diff_file.empty()) diff_path = settings.diff_file;
     if (!settings.diff_dir.empty()) {
         const fs::path in_dir = settings.diff_dir / name;
-        std::error_code ignored;
-        if (match) fs::remove(in_dir, ignored);  // an old diff picture would mislead
-        else diff_path = in_dir;
+        if (match) {
+            remove_old_diff(in_dir);
+        } else {
+            diff_path = in_dir;
+        }
     }
     if (diff_path) {
         try {
+            const fs::path inputs[] = {expected_path, actual_path};
+            browser::check_may_write(*diff_path, browser::WriteTarget::file, inputs);
             browser::write_png(*diff_path, difference.diff);
+            if (!settings.diff_dir.empty() && !wrote_before(*diff_path)) {
+                browser::OutputFolder::add_to_manifest(settings.diff_dir, name);
+            }
         } catch (const browser::FileError& error) {
             std::cerr << kProgram << ": " << error.what() << "\n";
+            return kTrouble;
+        } catch (const fs::filesystem_error& error) {
+            std::cerr << kProgram << ": cannot list the diff in " << browser::in_quotes(settings.diff_dir.string())
+                      << ": " << error.code().message() << "\n";
             return kTrouble;
         }
         std::cout << "  diff: " << diff_path->string() << "\n";
@@ -140,6 +179,11 @@ int main(int argc, char** argv) {
         return kTrouble;
     }
 
+    // CLI11's range lets NaN through: no comparison with it is false.
+    if (!std::isfinite(settings.tolerance.pixel_share)) {
+        std::cerr << kProgram << ": --share: must be a number from 0 to 1 (see " << kProgram << " --help)\n";
+        return kTrouble;
+    }
     std::error_code error;
     const bool folders = fs::is_directory(settings.expected, error);
     for (const fs::path& path : {settings.expected, settings.actual}) {
@@ -154,6 +198,15 @@ int main(int argc, char** argv) {
     }
     if (folders && !settings.diff_file.empty()) {
         std::cerr << kProgram << ": --diff names one file; use --diff-dir to compare folders\n";
+        return kTrouble;
+    }
+    try {
+        const fs::path inputs[] = {settings.expected, settings.actual};
+        if (!settings.diff_file.empty()) browser::check_may_write(settings.diff_file, browser::WriteTarget::file, inputs);
+        if (!settings.diff_dir.empty()) browser::check_may_write(settings.diff_dir, browser::WriteTarget::folder, inputs);
+    } catch (const browser::OutputRefused& refused) {
+        const fs::path& named = settings.diff_file.empty() ? settings.diff_dir : settings.diff_file;
+        std::cerr << kProgram << ": cannot write " << browser::in_quotes(named.string()) << ": " << refused.what() << "\n";
         return kTrouble;
     }
     if (!settings.diff_dir.empty()) {

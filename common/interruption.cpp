@@ -95,4 +95,10 @@ void remove_stale_leftovers(const fs::path& target, const std::string& marker) {
     }
 }
 
+std::string process_suffix() {
+    std::string suffix = "-";  // appended: g++ 12 warns falsely about "-" + to_string
+    suffix += std::to_string(::getpid());
+    return suffix;
+}
+
 }  // namespace browser

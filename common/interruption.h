@@ -39,6 +39,10 @@ private:
     std::filesystem::path path_;
 };
 
+// "-<pid>": the end of the names of this process's staging folders and partial files
+// ("<out>.partial-<pid>"), by which remove_stale_leftovers tells whose they are.
+std::string process_suffix();
+
 // Removes, beside `target`, what runs that are gone left of their own: every
 // "<target's name><marker><pid>" (marker ".partial-", say) whose process id names no
 // living process. A name with anything else after the marker is not ours, and stays.

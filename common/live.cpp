@@ -1,10 +1,10 @@
 #include "live.h"
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -12,7 +12,8 @@
 #include "interruption.h"
 #include "message_text.h"
 #include "page.h"
-#include "png_io.h"  // FileError
+#include "png_io.h"  // FileError, OutputRefused
+#include "write_guard.h"
 
 namespace browser {
 namespace {
@@ -57,10 +58,8 @@ std::string replay_command(const LiveOptions& live, int frames) {
 // Writes the script beside its place and renames it in, so a reader never finds half
 // a script. Throws FileError with a one-line reason.
 void write_script(const fs::path& file, const std::string& text) {
-    std::string suffix = ".partial-";  // appended: g++ 12 warns falsely about "." + to_string
-    suffix += std::to_string(::getpid());
     fs::path partial = file;
-    partial += suffix;
+    partial += ".partial" + process_suffix();
     {
         std::ofstream out(partial, std::ios::binary | std::ios::trunc);
         out << text << '\n';
@@ -72,6 +71,12 @@ void write_script(const fs::path& file, const std::string& text) {
         }
     }
     std::error_code error;
+    try {
+        check_may_write(file, WriteTarget::file);  // again: the name may lead elsewhere by now
+    } catch (const OutputRefused& refused) {
+        fs::remove(partial, error);
+        throw FileError(refused.what());
+    }
     fs::rename(partial, file, error);
     if (error) {
         std::error_code ignored;
@@ -80,12 +85,19 @@ void write_script(const fs::path& file, const std::string& text) {
     }
 }
 
-// The folder a recorded script will go into must be there before the session starts,
-// or the reader would only learn at the end that it cannot be kept.
-bool record_place_is_there(const fs::path& file) {
+// Why the recorded script may not go to `file`, if it may not: the place must pass
+// write_guard.h's rule, and its folder must be there before the session starts, or the
+// reader would only learn at the end that it cannot be kept.
+std::optional<std::string> record_refused(const fs::path& file, const Options& options) {
+    try {
+        check_may_write(file, WriteTarget::file, files_read(options));
+    } catch (const OutputRefused& refused) {
+        return refused.what();
+    }
     const fs::path folder = file.parent_path();
     std::error_code error;
-    return !fs::is_directory(file, error) && (folder.empty() || fs::is_directory(folder, error));
+    if (!folder.empty() && !fs::is_directory(folder, error)) return "its folder does not exist";
+    return std::nullopt;
 }
 
 class LiveSession {
@@ -182,8 +194,8 @@ private:
 
 int run_live(PageScripts& scripts, Window& window, const Options& options, Screen& screen) {
     const fs::path& record = options.live.record;
-    if (!record.empty() && !record_place_is_there(record)) {
-        std::cerr << "--record: cannot write \"" << record.string() << "\": no such folder, or it is a folder\n";
+    if (const auto refused = record.empty() ? std::nullopt : record_refused(record, options)) {
+        std::cerr << "--record: cannot write " << in_quotes(record.string()) << ": " << *refused << '\n';
         return 2;
     }
 

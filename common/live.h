@@ -27,9 +27,10 @@
 
 #include <vector>
 
-#include "browser.h"
+#include "command_line.h"
 #include "image.h"
 #include "keys.h"
+#include "page_scripts.h"
 
 namespace browser {
 

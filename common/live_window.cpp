@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -87,6 +88,15 @@ struct TextureDeleter {
     void operator()(SDL_Texture* texture) const { SDL_DestroyTexture(texture); }
 };
 
+// Whether the environment names a display, or a video driver, for SDL to use.
+bool display_named() {
+    for (const char* name : {"SDL_VIDEODRIVER", "DISPLAY", "WAYLAND_DISPLAY"}) {
+        const char* value = std::getenv(name);
+        if (value != nullptr && *value != '\0') return true;
+    }
+    return false;
+}
+
 [[noreturn]] void fail(const std::string& what) {
     throw LiveWindowError("--live: " + what + ": " + SDL_GetError());
 }
@@ -95,6 +105,15 @@ class SdlWindow final : public Screen {
 public:
     explicit SdlWindow(const LiveWindowSettings& settings) : settings_(settings) {
         if (!settings.events.empty()) scripted_ = read_events(settings.events);
+        // SIGINT and SIGTERM stay the run's (interruption.h): SDL would turn them into a
+        // quiet end of the session, exit status 0.
+        SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        // With no display named SDL tries one driver after another, may settle on one
+        // that shows nothing, and runs a session no one sees until it is killed.
+        if (!display_named()) {
+            throw LiveWindowError("--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
+                                  "SDL_VIDEODRIVER names a driver explicitly)");
+        }
         if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) fail("cannot open a window");
     }
     ~SdlWindow() override {

@@ -95,6 +95,21 @@ std::string joined(const std::vector<std::string>& pieces) {
 
 std::string printable(std::string_view text) { return joined(shown_characters(text, false)); }
 
+std::string first_words(std::string_view text, std::size_t longest) {
+    const std::vector<std::string> pieces = shown_characters(text, false);
+    std::string shown;
+    if (pieces.size() <= longest) {
+        for (const std::string& piece : pieces) shown += piece;
+        return shown;
+    }
+    constexpr std::size_t kMark = 3;  // "..."
+    std::size_t end = longest - kMark;
+    while (end > 0 && pieces[end] != " ") --end;  // the space the cut falls on, or before
+    if (end == 0) end = longest - kMark;           // one long word: cut inside it
+    for (std::size_t i = 0; i < end; ++i) shown += pieces[i];
+    return shown + "...";
+}
+
 // Built by appending: g++ 12 gives a false -Wrestrict warning for "\"" + text + "\"".
 std::string in_quotes(std::string_view text) {
     std::string quoted = "\"";

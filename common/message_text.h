@@ -19,6 +19,10 @@ inline constexpr std::size_t kLongestShown = 120;
 // is; then shortened to kLongestShown characters.
 std::string printable(std::string_view text);
 
+// printable(text) cut at the last space that keeps it within `longest` characters, "..."
+// marking the cut: a message of ours (a parser's) that is cut reads as whole words.
+std::string first_words(std::string_view text, std::size_t longest);
+
 // printable(text) in double quotes, a quote inside it escaped: "--frames: must be ...
 // (got "12\n")".
 std::string in_quotes(std::string_view text);

@@ -1,41 +1,84 @@
 #include "output_folder.h"
 
-#include <unistd.h>
+#include <sys/stat.h>
 
+#include <algorithm>
+#include <fstream>
+#include <set>
 #include <system_error>
 #include <utility>
+#include <vector>
 
-#include "png_io.h"  // FileError
+#include "message_text.h"
+#include "png_io.h"  // OutputRefused
+#include "write_guard.h"
 
 namespace browser {
 namespace {
 
 namespace fs = std::filesystem;
 
-void check_replaceable(const fs::path& out, const std::string& marker) {
-    const std::string name = out.filename().string();
-    if (name.empty() || name == "." || name == "..") {
-        throw OutputRefused("the current folder, its parent or the root cannot be replaced; name a folder inside it");
+// The names a folder's manifest lists; none when it has no manifest.
+std::set<std::string> manifest_names(const fs::path& folder) {
+    std::set<std::string> names;
+    std::ifstream in(folder / kManifest);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.front() != '#') names.insert(line);
     }
-    const fs::file_status status = fs::symlink_status(out);
-    if (!fs::exists(status)) return;
-    // A symbolic link would be replaced by a folder, not followed; a link is not a run's.
-    if (fs::is_symlink(status)) throw OutputRefused("it is a symbolic link, which a run does not replace");
-    if (!fs::is_directory(status)) throw OutputRefused("it exists and is not a folder");
-    if (!fs::is_empty(out) && !fs::exists(out / marker)) {
-        throw OutputRefused("it is a folder that a run did not write (it has no " + marker +
-                        "), so it is left alone; remove it or choose another --out");
+    return names;
+}
+
+// A plain file with one name: what a run writes. A link, a subfolder or a second name
+// of someone's file is not, even under a listed name.
+bool is_plain_file(const fs::path& path) {
+    struct stat status {};
+    return ::lstat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode) && status.st_nlink == 1;
+}
+
+// The names in `folder`, sorted, so that a refusal always names the same first one.
+std::vector<std::string> sorted_names(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+void check_replaceable(const fs::path& out, std::span<const fs::path> inputs) {
+    check_may_write(out, WriteTarget::folder, inputs);
+    if (!fs::exists(fs::symlink_status(out))) return;
+    const std::set<std::string> written = manifest_names(out);
+    for (const std::string& name : sorted_names(out)) {
+        const bool listed = name == kManifest || written.contains(name);
+        if (listed && is_plain_file(out / name)) continue;
+        throw OutputRefused("it holds " + in_quotes(name) + ", which no run wrote (a run replaces only a folder "
+                            "holding what its " + kManifest + " lists); move it away or choose another --out");
     }
+}
+
+// Removes what `folder`'s manifest lists, the manifest, and then the folder if that
+// leaves it empty; anything else in it stays.
+void remove_written(const fs::path& folder) {
+    std::error_code ignored;
+    for (const std::string& name : manifest_names(folder)) {
+        if (is_plain_file(folder / name)) fs::remove(folder / name, ignored);
+    }
+    fs::remove(folder / kManifest, ignored);
+    fs::remove(folder, ignored);  // only an empty folder goes
+}
+
+void write_manifest(const fs::path& folder) {
+    std::vector<std::string> names = sorted_names(folder);
+    std::ofstream out(folder / kManifest, std::ios::binary | std::ios::trunc);
+    out << "# The files a run wrote here. The next run into this folder replaces only these;\n"
+           "# anything else in the folder makes it refuse.\n";
+    for (const std::string& name : names) out << name << '\n';
+    out.close();
+    if (!out) throw fs::filesystem_error("cannot write the manifest", folder / kManifest,
+                                         std::make_error_code(std::errc::io_error));
 }
 
 // "-<process id>". Built by appending: g++ 12 gives a false -Wrestrict warning
 // for "-" + std::to_string(...).
-std::string process_suffix() {
-    std::string suffix = "-";
-    suffix += std::to_string(::getpid());
-    return suffix;
-}
-
 }  // namespace
 
 // "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
@@ -46,24 +89,24 @@ fs::path OutputFolder::normalized(const fs::path& given) {
     return path;
 }
 
-OutputFolder::OutputFolder(const fs::path& out, std::string marker)
+OutputFolder::OutputFolder(const fs::path& out, std::span<const fs::path> inputs)
     : out_(normalized(out)), suffix_(process_suffix()) {
-    check_replaceable(out_, marker);
-    note_interruptions();
-    fs::path staging = out_;
-    staging += ".partial" + suffix_;
-    // Before the run starts, a folder that cannot be made is one more refusal of --out.
+    // Before the run starts, a folder that cannot be read or made is one more refusal of --out.
     try {
+        check_replaceable(out_, inputs);
+        note_interruptions();
+        fs::path staging = out_;
+        staging += ".partial" + suffix_;
         if (out_.has_parent_path()) fs::create_directories(out_.parent_path());
         remove_stale_leftovers(out_, ".partial-");
         remove_stale_leftovers(out_, ".old-");
         fs::remove_all(staging);  // left over from a crashed run that had our process id
         leftover_.emplace(staging);
         fs::create_directory(staging);
+        staging_ = std::move(staging);
     } catch (const fs::filesystem_error& error) {
         throw OutputRefused(error.code().message());
     }
-    staging_ = std::move(staging);
 }
 
 OutputFolder::~OutputFolder() {
@@ -73,15 +116,21 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
+    write_manifest(staging_);
     if (!fs::exists(fs::symlink_status(out_))) {
         fs::rename(staging_, out_);
         committed_ = true;
         leftover_.reset();
         return;
     }
+    // Checked again: something may have come into the folder during the run.
+    try {
+        check_replaceable(out_, {});
+    } catch (const OutputRefused& refused) {
+        throw FileError(refused.what());  // after the run: a failure to write (exit status 1), not a refusal
+    }
     fs::path old = out_;
     old += ".old" + suffix_;
-    fs::remove_all(old);
     fs::rename(out_, old);
     try {
         fs::rename(staging_, out_);
@@ -92,8 +141,17 @@ void OutputFolder::commit() {
     }
     committed_ = true;
     leftover_.reset();
-    std::error_code ignored;  // the new files are in place; a leftover old folder is only litter
-    fs::remove_all(old, ignored);
+    remove_written(old);  // the new files are in place; what is left of the old folder is only litter
+}
+
+void OutputFolder::add_to_manifest(const fs::path& out, std::string_view name) {
+    std::ofstream manifest(out / kManifest, std::ios::binary | std::ios::app);
+    manifest << name << '\n';
+    manifest.close();
+    if (!manifest) {
+        throw fs::filesystem_error("cannot add to the manifest", out / kManifest,
+                                   std::make_error_code(std::errc::io_error));
+    }
 }
 
 }  // namespace browser

@@ -15,6 +15,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "message_text.h"
+
 namespace browser {
 
 namespace fs = std::filesystem;
@@ -25,7 +27,7 @@ namespace {
 constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
 [[noreturn]] void fail(const char* doing, const fs::path& path, const std::string& reason) {
-    throw FileError(std::string(doing) + " " + path.string() + ": " + reason);
+    throw FileError(std::string(doing) + " " + printable(path.string()) + ": " + reason);
 }
 
 // The folder a file goes into: "." for a bare file name.
@@ -81,31 +83,51 @@ void write_png(const fs::path& path, const Image& image) {
     }
 }
 
-Image read_png(const fs::path& path) {
-    constexpr const char* kDoing = "cannot read PNG";
-    std::error_code error;
-    if (!fs::exists(path, error)) fail(kDoing, path, "no such file");
-    if (fs::is_directory(path, error)) fail(kDoing, path, "it is a folder");
-
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(kDoing, path, std::strerror(errno));
-    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+Image decode_png(std::span<const unsigned char> bytes) {
     if (bytes.size() < kPngSignature.size() ||
         !std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin())) {
-        fail(kDoing, path, "not a PNG file");
+        throw FileError("not a PNG file");
     }
-    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) fail(kDoing, path, "file too large");
-
+    if (bytes.size() > kLargestPngFile) throw FileError("it is larger than a picture of a run can be");
+    const int size = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels_in_file = 0;
-    unsigned char* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-                                                  &channels_in_file, 4);
-    if (!pixels) fail(kDoing, path, std::string("damaged PNG file (") + stbi_failure_reason() + ")");
+    // The header says how large the picture is; a small file can unpack to gigabytes.
+    if (stbi_info_from_memory(bytes.data(), size, &width, &height, &channels_in_file) &&
+        static_cast<double>(width) * height > kMostPngPixels) {
+        throw FileError("it is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the " +
+                        std::to_string(static_cast<long>(kMostPngPixels)) + " a picture may have");
+    }
+    unsigned char* pixels = stbi_load_from_memory(bytes.data(), size, &width, &height, &channels_in_file, 4);
+    // stb names an unknown chunk by its four bytes, whatever they are (found by fuzz/png_reader).
+    if (!pixels) throw FileError("damaged PNG file (" + printable(stbi_failure_reason()) + ")");
     Image image;
     image.width = width;
     image.height = height;
     image.rgba.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     stbi_image_free(pixels);
     return image;
+}
+
+Image read_png(const fs::path& path) {
+    constexpr const char* kDoing = "cannot read PNG";
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);  // through links: a link to a picture is read
+    if (!fs::exists(status)) fail(kDoing, path, "no such file");
+    if (fs::is_directory(status)) fail(kDoing, path, "it is a folder");
+    // A FIFO would wait for a writer for ever, a device such as /dev/zero never ends.
+    if (fs::is_fifo(status)) fail(kDoing, path, "it is a FIFO, not a regular file");
+    if (fs::is_character_file(status) || fs::is_block_file(status)) fail(kDoing, path, "it is a device, not a regular file");
+    if (!fs::is_regular_file(status)) fail(kDoing, path, "it is not a regular file");
+    if (fs::file_size(path, error) > kLargestPngFile) fail(kDoing, path, "it is larger than a picture of a run can be");
+
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(kDoing, path, std::strerror(errno));
+    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    try {
+        return decode_png(bytes);
+    } catch (const FileError& error) {
+        fail(kDoing, path, error.what());
+    }
 }
 
 }  // namespace browser

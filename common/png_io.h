@@ -1,7 +1,9 @@
 #pragma once
 // PNG files in and out (stb_image_write / stb_image).
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 
 #include "image.h"
@@ -22,7 +24,17 @@ struct OutputRefused : FileError {
 // sees half a file. Throws FileError with a one-line message when it cannot.
 void write_png(const std::filesystem::path& path, const Image& image);
 
-// Throws FileError when the file is missing or not a PNG.
+// The largest picture read: twice the largest page a run saves (browser.h's
+// kMaxDevicePixels), so that contact sheets fit, 128 MiB unpacked; and its file.
+inline constexpr double kMostPngPixels = 2.0 * 4096 * 4096;
+inline constexpr std::uintmax_t kLargestPngFile = 64u << 20;
+
+// Throws FileError when the file is missing, not a regular file, larger than the limits
+// above or not a PNG.
 Image read_png(const std::filesystem::path& path);
+
+// The picture a PNG file's bytes hold. Throws FileError with the reason (not a PNG,
+// damaged, larger than the limits above).
+Image decode_png(std::span<const unsigned char> bytes);
 
 }  // namespace browser

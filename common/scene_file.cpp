@@ -71,6 +71,8 @@ std::string shown(const json& value) {
 // JSON paths as a reader would write them: world.gravity[1], bodies[3].radius. A key
 // that is not a plain word is quoted (bodies[0]["my key"]), so that a strange key, even
 // one holding a line break, cannot break the one-line message.
+constexpr std::size_t kLongestPlainKey = 40;
+
 bool is_plain_word(std::string_view key) {
     return !key.empty() &&
            std::all_of(key.begin(), key.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
@@ -78,6 +80,12 @@ bool is_plain_word(std::string_view key) {
 
 std::string member_path(const std::string& object, const std::string& key) {
     std::string path = object;
+    if (key.size() > kLongestPlainKey) {
+        // Its start, quoted, with "..." inside the quotes where it is cut.
+        std::string start = shown(json(key.substr(0, kLongestPlainKey / 2)));
+        if (start.ends_with('"')) start.pop_back();
+        return path.append("[").append(start).append("...\"]");
+    }
     if (!is_plain_word(key)) return path.append("[").append(shown(json(key))).append("]");
     if (!path.empty()) path += '.';
     return path.append(key);
@@ -151,11 +159,14 @@ std::string line_and_column(std::string_view text, std::size_t bytes_read) {
 }
 
 // nlohmann's message without its prefix ("[json.exception.parse_error.101] parse error
-// at line 1, column 9: "), whose position we have already given our own way.
+// at line 1, column 9: "), whose position we have already given our own way, and
+// without its "; last read: '...'" (the text itself, of any length), cut at a word.
 std::string parser_reason(const json::exception& error) {
-    const std::string_view message = error.what();
+    std::string_view message = error.what();
     const std::size_t colon = message.find(": ", message.find(']'));
-    return printable(colon == std::string_view::npos ? message : message.substr(colon + 2));
+    if (colon != std::string_view::npos) message.remove_prefix(colon + 2);
+    message = message.substr(0, message.find("; last read"));
+    return first_words(message, kLongestShown);
 }
 
 // A first pass over the text that builds nothing and only follows the JSON path. The
@@ -443,6 +454,10 @@ std::vector<BodyDescription> read_scene_text(const std::string& text, std::strin
     try {
         if (text.size() > kMaxSceneBytes) {
             refuse("", "longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene may hold");
+        }
+        // The parser would stop at a NUL and take the text before it as the whole scene.
+        if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+            refuse(line_and_column(text, nul + 1), "a NUL byte, which a scene file never holds");
         }
         return read_scene(parse(text), world_keys);
     } catch (const Refusal& refusal) {

@@ -8,15 +8,14 @@
 #include <system_error>
 #include <utility>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <optional>
 
+#include "browser.h"  // is_picture_name
 #include "message_text.h"
 #include "output_folder.h"
 #include "scene_file.h"
+#include "write_guard.h"
 
 namespace browser {
 
@@ -44,40 +43,19 @@ bool is_shape_name(std::string_view shape) {
     return shape == shape_name(ShapeKind::rectangle) || shape == shape_name(ShapeKind::circle);
 }
 
-// Why `path` may not be replaced by a dump, if it may not: only a regular file is. Read
-// with lstat, so a symbolic link is seen as one, not as what it points to.
-std::optional<std::string> not_replaceable(const fs::path& path) {
-    struct stat status {};
-    if (::lstat(path.c_str(), &status) != 0) return std::nullopt;  // nothing there yet (or no folder: open says)
-    if (S_ISREG(status.st_mode)) return std::nullopt;
-    const char* what = S_ISDIR(status.st_mode)    ? "a folder"
-                       : S_ISLNK(status.st_mode)  ? "a symbolic link"
-                       : S_ISFIFO(status.st_mode) ? "a FIFO"
-                       : S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) ? "a device"
-                                                                           : "not a regular file";
-    return std::string("it is ") + what + "; --dump writes only a regular file, new or one it replaces";
-}
-
-// `path` with its links and dots resolved as far as it exists.
-fs::path resolved(const fs::path& path) {
-    std::error_code error;
-    fs::path full = fs::weakly_canonical(fs::absolute(path, error), error);
-    return error ? path.lexically_normal() : full;
-}
-
-// Whether `path` is the folder `out` (0), lies inside it (1), or neither (-1).
-int place_in(const fs::path& path, const fs::path& out) {
-    if (out.empty()) return -1;
-    const fs::path folder = resolved(out), file = resolved(path);
-    const auto [end, rest] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
-    if (end != folder.end()) return -1;
-    return rest == file.end() ? 0 : 1;
-}
-
-std::string process_suffix() {
-    std::string suffix = "-";
-    suffix += std::to_string(::getpid());
-    return suffix;
+// Why a dump inside the --out folder may not go where it is named, if it may not: the
+// run replaces that folder with what it writes, so the dump goes directly into it, and
+// under a name none of the run's own files has.
+std::optional<std::string> not_placeable_in(const fs::path& path, const fs::path& out) {
+    if (resolved(path).parent_path() != resolved(out)) {
+        return "a dump inside the --out folder goes directly into it, not into a folder inside it";
+    }
+    const std::string name = path.filename().string();
+    if (is_picture_name(name) || name == kManifest) {
+        return "it is named as a file the run writes into the --out folder (final.png, frame_NNNN.png, "
+               "contact_sheet.png, animation.gif, .manifest); name the dump otherwise";
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -87,12 +65,23 @@ NonFiniteState::NonFiniteState(long step, std::size_t index, std::string_view sh
                          ") has a position or velocity that is not a finite number; the scene is beyond what this "
                          "engine can compute, and nothing was written") {}
 
-StateDump::StateDump(fs::path path, const fs::path& out) : path_(std::move(path)) {
+StateDump::StateDump(fs::path path, const fs::path& out, std::span<const fs::path> inputs) : path_(std::move(path)) {
     if (path_.empty()) throw std::invalid_argument("StateDump: no file named");
     const fs::path out_folder = OutputFolder::normalized(out);
-    const int place = place_in(path_, out_folder);
-    if (place == 0) throw OutputRefused("cannot write state dump " + printable(path_.string()) + ": it is the --out folder");
-    inside_out_ = place == 1;
+    const auto refuse = [&](const std::string& reason) {
+        throw OutputRefused("cannot write state dump " + printable(path_.string()) + ": " + reason);
+    };
+    if (!out_folder.empty() && is_within(out_folder, path_)) refuse("it is the --out folder or holds it");
+    inside_out_ = !out_folder.empty() && is_within(path_, out_folder);
+    if (inside_out_) {
+        if (const auto reason = not_placeable_in(path_, out_folder)) refuse(*reason);
+    }
+    try {
+        check_may_write(path_, WriteTarget::file, inputs);
+    } catch (const OutputRefused& reason) {
+        refuse(reason.what());
+    }
+    out_folder_ = out_folder;
     if (inside_out_) {
         // The run replaces the whole folder: the dump waits beside it, and moves in after.
         partial_ = out_folder;
@@ -100,9 +89,6 @@ StateDump::StateDump(fs::path path, const fs::path& out) : path_(std::move(path)
         std::error_code error;
         if (out_folder.has_parent_path()) fs::create_directories(out_folder.parent_path(), error);
     } else {
-        if (const auto reason = not_replaceable(path_)) {
-            throw OutputRefused("cannot write state dump " + printable(path_.string()) + ": " + *reason);
-        }
         partial_ = fs::path(path_).concat(".partial");
     }
     note_interruptions();
@@ -153,11 +139,21 @@ void StateDump::finish() {
     if (inside_out_ && path_.has_parent_path()) fs::create_directories(path_.parent_path(), error);
     if (error) fail(error.message());
     // Checked again: the file named may have become something else during the run.
-    if (const auto reason = not_replaceable(path_)) fail(*reason);
+    try {
+        check_may_write(path_, WriteTarget::file);
+    } catch (const OutputRefused& reason) {
+        fail(reason.what());
+    }
     fs::rename(partial_, path_, error);
     if (error) fail(error.message());
     finished_ = true;
     leftover_.reset();
+    if (!inside_out_) return;
+    try {
+        OutputFolder::add_to_manifest(out_folder_, path_.filename().string());
+    } catch (const fs::filesystem_error& manifest_error) {
+        fail(manifest_error.code().message());
+    }
 }
 
 void StateDump::fail(const std::string& reason) {

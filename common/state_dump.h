@@ -17,15 +17,19 @@
 // its telling name, which the next dump to <path> removes once that process is gone), and
 // a dump an earlier run wrote to <path> stays as it was until the new one is complete.
 //
-// <path> must be a regular file or nothing yet: a symbolic link, a FIFO, a device or a
-// folder is refused (OutputRefused), never replaced. A dump inside the run's --out folder
-// is written beside that folder and moved into it by finish(), after the run has put its
-// new folder in place of the old one.
+// <path> must pass write_guard.h's rule (a plain regular file with one name or nothing
+// yet, never a link, a FIFO, a device or a folder, nor a file the run reads): anything
+// else is refused (OutputRefused), never replaced. Nor may it be the --out folder or
+// hold it. A dump inside the run's --out folder goes directly into it, under a name
+// none of the run's pictures has; it is written beside that folder, moved into it by
+// finish() after the run has put its new folder in place of the old one, and added to
+// the folder's manifest (output_folder.h), so the next run may replace it.
 
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -39,10 +43,11 @@ namespace browser {
 class StateDump {
 public:
     // Creates the partial file and writes the header line. `out` is the run's --out
-    // folder ("" for none). Throws OutputRefused when <path> may not be written (see
+    // folder ("" for none), `inputs` the files the run reads. Throws OutputRefused when <path> may not be written (see
     // above), FileError when the partial file cannot be created; each one line naming
     // `path`.
-    explicit StateDump(std::filesystem::path path, const std::filesystem::path& out = {});
+    explicit StateDump(std::filesystem::path path, const std::filesystem::path& out = {},
+                       std::span<const std::filesystem::path> inputs = {});
     // Removes the partial file unless finish() succeeded.
     ~StateDump();
 
@@ -67,6 +72,7 @@ private:
     std::filesystem::path path_;
     std::filesystem::path partial_;
     std::optional<Leftover> leftover_;  // partial_, should the run be interrupted
+    std::filesystem::path out_folder_;  // the run's --out folder, "" for none
     bool inside_out_ = false;          // path_ is inside the --out folder
     std::ofstream out_;
     bool finished_ = false;

@@ -41,7 +41,7 @@ void Core::runGameLoop() {
 }
 
 void Core::update() {
-    for (const auto& shape : all_objects_) shape->update(*this);
+    for (const auto& shape : all_objects_) shape->update(height());
 }
 
 void Core::updateUIEcho() {

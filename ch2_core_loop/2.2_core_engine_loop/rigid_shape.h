@@ -12,14 +12,16 @@
 // Each fixed step of the engine loop calls update() on every shape. In this project
 // that is a stand-in for physics, there only to show the loop running: a shape that is
 // not fixed sinks 1 px per update until its centre reaches the bottom of the canvas.
-// Chapter 4 replaces it with real motion.
+// Chapter 4 replaces it with real motion. The book's shape reads the canvas height from
+// the global engine (gEngine.Core.mHeight); here the core hands it over, so a shape
+// needs nothing of the core that holds it, and core.h includes rigid_shape.h, not the
+// other way round as well.
 
 #include "canvas.h"
 #include "vec2.h"
 
 namespace engine {
 
-class Core;
 using browser::Vec2;
 
 enum class ShapeType { Rectangle, Circle };
@@ -39,7 +41,7 @@ public:
     virtual void move(Vec2 offset) = 0;
     // Turns the shape about its centre by `angle` radians (clockwise on screen).
     virtual void rotate(double angle) = 0;
-    void update(const Core& core);
+    void update(double canvas_height);
 
     virtual void draw(browser::Canvas& context) const = 0;
 

@@ -18,6 +18,7 @@ RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
     return core.add(Rectangle(body.center, body.width, body.height, attributes));
 }
 
+// The engine's type in the browser's terms; the name a file spells is shape_name's alone.
 browser::ShapeKind kindOf(const RigidShape& shape) {
     return shape.type() == ShapeType::Circle ? browser::ShapeKind::circle : browser::ShapeKind::rectangle;
 }

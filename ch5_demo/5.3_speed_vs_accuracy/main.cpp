@@ -74,7 +74,7 @@ int runPage(Page& page, browser::Window& window, engine::Core& core, const brows
     try {
         std::optional<browser::StateDump> dump;
         if (!dump_file.empty()) {
-            dump.emplace(dump_file, options.out_dir);
+            dump.emplace(dump_file, options.out_dir, browser::files_read(options));
             engine::dumpState(*dump, core);
         }
         core.onStep([&] {

@@ -18,6 +18,7 @@ RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
     return core.add(Rectangle(body.center, body.width, body.height, attributes));
 }
 
+// The engine's type in the browser's terms; the name a file spells is shape_name's alone.
 browser::ShapeKind kindOf(const RigidShape& shape) {
     return shape.type() == ShapeType::Circle ? browser::ShapeKind::circle : browser::ShapeKind::rectangle;
 }
@@ -115,9 +116,13 @@ browser::StepCost stepCost(const Core& core) {
     const int passes = world.solver == SolverKind::book
                            ? world.relaxation_iterations
                            : 1 + world.velocity_iterations + world.position_iterations;
+    // The sequential impulse solver keeps a contact for every touching pair, this step's
+    // and last step's (for warm starting): 1,250 bytes a pair measured with 500 circles
+    // on one point. The book's passes keep only the collisions they draw.
+    const double bytes_a_contact = world.solver == SolverKind::book ? browser::StepCost{}.bytes_a_contact : 1300.0;
     // From 4.3 on a frame draws no collisions, only the shapes.
     return {.dt_s = world.dt, .substeps = world.substeps, .passes = passes, .shapes = core.objectCount(),
-            .draws_pairs = false};
+            .draws_pairs = false, .bytes_a_contact = bytes_a_contact};
 }
 
 }  // namespace engine

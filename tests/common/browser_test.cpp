@@ -14,6 +14,7 @@
 
 #include "captured_output.h"
 #include "browser.h"
+#include "output_folder.h"
 #include "contact_sheet.h"
 #include "png_io.h"
 #include "scratch_folder.h"
@@ -31,6 +32,16 @@ std::vector<std::string> names_in(const fs::path& folder) {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
+    return names;
+}
+
+// The names a run's manifest lists, in its order (output_folder.h).
+std::vector<std::string> manifest_names(const fs::path& folder) {
+    std::ifstream in(folder / browser::kManifest);
+    std::vector<std::string> names;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.front() != '#') names.push_back(line);
+    }
     return names;
 }
 
@@ -125,7 +136,7 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
     SECTION("every 10 of 25 frames") {
         const Result result = run(options_for(out, 25, 10));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) == std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png",
+        CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png",
                                                         "frame_0010.png", "frame_0020.png"});
         CHECK(is_one_line(result.out));
         CHECK_THAT(result.out, Catch::StartsWith("wrote 4 pictures to "));
@@ -136,21 +147,21 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
     SECTION("every 0: the final picture only") {
         const Result result = run(options_for(out, 5, 0));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) == std::vector<std::string>{"final.png"});
+        CHECK(names_in(out) == std::vector<std::string>{".manifest", "final.png"});
         CHECK_THAT(result.out, Catch::StartsWith("wrote 1 picture to "));
         CHECK_THAT(result.out, Catch::EndsWith("(final.png)\n"));
     }
     SECTION("every frame") {
         const Result result = run(options_for(out, 3, 1));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) == std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png",
+        CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png",
                                                         "frame_0001.png", "frame_0002.png"});
     }
     SECTION("frame numbers past 9999 grow beyond four digits") {
         const Result result = run(options_for(out, 10001, 10000));
         REQUIRE(result.status == 0);
         CHECK(names_in(out) ==
-              std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png", "frame_10000.png"});
+              std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png", "frame_10000.png"});
     }
 }
 
@@ -189,12 +200,26 @@ TEST_CASE("browser: a run replaces the whole output folder and leaves nothing be
     ScratchFolder temp("browser_test");
     const fs::path out = temp.path / "out";
     REQUIRE(run(options_for(out, 3, 1)).status == 0);
-    std::ofstream(out / "old_notes.txt") << "from an earlier run\n";
+    CHECK(manifest_names(out) == std::vector<std::string>{"contact_sheet.png", "final.png", "frame_0000.png",
+                                                          "frame_0001.png", "frame_0002.png"});
 
     const Result result = run(options_for(out, 2, 0));
     REQUIRE(result.status == 0);
-    CHECK(names_in(out) == std::vector<std::string>{"final.png"});
+    CHECK(names_in(out) == std::vector<std::string>{".manifest", "final.png"});
     CHECK(names_in(temp.path) == std::vector<std::string>{"out"});
+}
+
+TEST_CASE("browser: a run's folder that came to hold a file no run wrote is refused, naming it, and kept whole") {
+    ScratchFolder temp("browser_test");
+    const fs::path out = temp.path / "out";
+    REQUIRE(run(options_for(out, 3, 1)).status == 0);
+    std::ofstream(out / "notes.txt") << "the reader's\n";
+    const Result result = run(options_for(out, 2, 0));
+    CHECK(result.status == 2);
+    CHECK(is_one_line(result.err));
+    CHECK_THAT(result.err, Catch::Contains("it holds \"notes.txt\", which no run wrote"));
+    CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png",
+                                                    "frame_0001.png", "frame_0002.png", "notes.txt"});
 }
 
 TEST_CASE("browser: an empty output folder may be replaced, and a trailing slash is fine") {
@@ -202,7 +227,7 @@ TEST_CASE("browser: an empty output folder may be replaced, and a trailing slash
     fs::create_directories(temp.path / "out");
     const Result result = run(options_for(temp.path / "out" / "", 1, 0));
     REQUIRE(result.status == 0);
-    CHECK(names_in(temp.path / "out") == std::vector<std::string>{"final.png"});
+    CHECK(names_in(temp.path / "out") == std::vector<std::string>{".manifest", "final.png"});
     CHECK(names_in(temp.path) == std::vector<std::string>{"out"});
 }
 
@@ -320,9 +345,11 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
     const Case cases[] = {
         // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests.
         {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests"},
-        {0, 1, 4096, 4096, 2, "the page is too large: 8192 x 8192 device pixels at --scale 2"},
-        // 4096 x 4096 px, 29,803 frames: 5.0e11 pixels drawn.
-        {0, 29803, 4096, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
+        // The page is the canvas and the 380 px panel beside it: (4096 + 380) x 2 wide.
+        {0, 1, 4096, 4096, 2, "the page is too large: 8952 x 8192 device pixels (the canvas and the 380 px panel"},
+        {0, 1, 3717, 4096, 1, "the page is too large: 4097 x 4096 device pixels"},
+        // A page of 4096 x 4096 px, 29,803 frames: 5.0e11 pixels drawn.
+        {0, 29803, 3716, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
     };
     for (const Case& c : cases) {
         INFO(c.says);
@@ -343,4 +370,36 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
     browser::Options inside = options_for(out, 100, 0);
     inside.frame_ms = 1000.0 / 60.0;
     CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <= browser::kMaxPairTests);
+}
+
+TEST_CASE("browser: the contact memory bound is every pair of the most shapes in contact") {
+    // 5.4's sequential impulses: 1,300 bytes a contact. 784 shapes: 306,936 pairs, 399.0 MB;
+    // 785: 307,720 pairs, 400.04 MB, past kMaxContactBytes.
+    const browser::Options none = options_for("unused", 1, 0);
+    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, none) == 306'936.0 * 1300);
+    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, none) <= browser::kMaxContactBytes);
+    CHECK(browser::contact_memory_bound({.shapes = 785, .bytes_a_contact = 1300}, none) > browser::kMaxContactBytes);
+    // An F or G press is one shape more, as in the pair-test bound.
+    const browser::Options one_more = options_for("unused", 1, 0, "g");
+    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, one_more) == 307'720.0 * 1300);
+}
+
+TEST_CASE("browser: the encoding bound counts each saved page, its place on the sheet, and GIF frames at a tenth") {
+    // 10 frames, every 5th saved (0 and 5): final.png and 2 pictures, each also a quarter
+    // page on the contact sheet; a GIF of every 2nd frame: 5 frames at a tenth of a PNG's cost.
+    browser::Options options = options_for("unused", 10, 5);
+    CHECK(browser::encoding_bound(1000.0, options) == 1000.0 * (1 + 2 * 1.25));
+    options.gif = true;
+    options.gif_every = 2;
+    CHECK(browser::encoding_bound(1000.0, options) == 1000.0 * (1 + 2 * 1.25 + 5 * 0.1));
+}
+
+TEST_CASE("browser: the names of a run's own files") {
+    for (const char* name : {"final.png", "contact_sheet.png", "animation.gif", "animation.gif.partial", "frame_0000.png",
+                             "frame_10000.png"}) {
+        CHECK(browser::is_picture_name(name));
+    }
+    for (const char* name : {"frame_.png", "frame_00a0.png", "final.png.tmp", "dump.csv", ".manifest", "Final.png"}) {
+        CHECK_FALSE(browser::is_picture_name(name));
+    }
 }

@@ -179,7 +179,7 @@ TEST_CASE("gif: a run writes animation.gif with ceil(frames / N) frames of the w
     const RunResult result = run_square(gif_options(out, 7, 2));
     REQUIRE(result.status == 0);
     CHECK(result.err.empty());
-    CHECK(names_in(out) == std::vector<std::string>{"animation.gif", "final.png"});
+    CHECK(names_in(out) == std::vector<std::string>{".manifest", "animation.gif", "final.png"});
     CHECK_THAT(result.out, Catch::Contains("animation.gif (4 frames)"));
 
     const DecodedGif gif = decode(out / "animation.gif");
@@ -294,7 +294,7 @@ TEST_CASE("gif: --gif-every 1 puts every frame in, and the contact sheet comes t
     options.every = 2;
     const RunResult result = run_square(options);
     REQUIRE(result.status == 0);
-    CHECK(names_in(out) == std::vector<std::string>{"animation.gif", "contact_sheet.png", "final.png",
+    CHECK(names_in(out) == std::vector<std::string>{".manifest", "animation.gif", "contact_sheet.png", "final.png",
                                                                    "frame_0000.png", "frame_0002.png"});
     CHECK_THAT(result.out, Catch::EndsWith(", contact_sheet.png and animation.gif (3 frames)\n"));
     CHECK(decode(out / "animation.gif").frames.size() == 3);

@@ -351,23 +351,7 @@ TEST_CASE("scene files: a dump that cannot be written stops the run before any p
 
 namespace {
 
-bool isOneLine(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
-
-// A refused run: status 2, one line that mentions `says`, and nothing new in `folder`
-// beyond what was there (`before`) and the captured output.
-void checkRefused(const test::ScratchFolder& folder, const std::string& command, const std::string& says) {
-    std::vector<std::string> before = folder.files();
-    for (const char* output : {"stdout.txt", "stderr.txt"}) {
-        if (std::find(before.begin(), before.end(), output) == before.end()) before.push_back(output);
-    }
-    std::sort(before.begin(), before.end());
-    const test::ProgramRun run = test::runStageProgram(folder, command);
-    INFO(command << "\n" << run.error_text);
-    CHECK(run.status == 2);
-    CHECK(isOneLine(run.error_text));
-    CHECK_THAT(run.error_text, Catch::Contains(says));
-    CHECK(folder.files() == before);
-}
+using test::checkRefused;
 
 std::string outIn(const test::ScratchFolder& folder) { return " --out " + test::quoted(folder.path / "out"); }
 
@@ -423,16 +407,15 @@ TEST_CASE("hostile input: --dump replaces only a regular file, never a link, a F
     fs::create_symlink(folder.path / "data.csv", folder.path / "link.csv");
     REQUIRE(::mkfifo((folder.path / "fifo").c_str(), 0600) == 0);
     const auto dump = [&](const std::string& file) { return "--frames 3 --keys '' --dump " + file + outIn(folder); };
-    const std::string rule = "--dump writes only a regular file, new or one it replaces";
-    checkRefused(folder, dump(test::quoted(folder.path / "link.csv")), "it is a symbolic link; " + rule);
+    checkRefused(folder, dump(test::quoted(folder.path / "link.csv")), "link.csv: it is a symbolic link");
     CHECK(test::readText(folder.path / "data.csv") == "someone's data\n");
-    checkRefused(folder, dump(test::quoted(folder.path / "fifo")), "it is a FIFO; " + rule);
+    checkRefused(folder, dump(test::quoted(folder.path / "fifo")), "fifo: it is a FIFO");
     // Only ever named to be refused: a test that failed must not replace /dev/null.
-    checkRefused(folder, dump("/dev/null"), "/dev/null: it is a device; " + rule);
+    checkRefused(folder, dump("/dev/null"), "/dev/null: it is a device");
     CHECK(fs::is_character_file("/dev/null"));
     // A device node of the test's own, where the system lets a test make one (root).
     if (::mknod((folder.path / "null").c_str(), S_IFCHR | 0600, makedev(1, 3)) == 0) {
-        checkRefused(folder, dump(test::quoted(folder.path / "null")), "it is a device; " + rule);
+        checkRefused(folder, dump(test::quoted(folder.path / "null")), "null: it is a device");
         CHECK(fs::is_character_file(folder.path / "null"));
     }
     checkRefused(folder, dump("''"), "--dump: must name a file (got \"\")");
@@ -487,7 +470,7 @@ TEST_CASE("hostile input: --out problems are refusals too: status 2, one line") 
     const test::ScratchFolder folder("hostile-out");
     fs::create_directories(folder.path / "thesis");
     std::ofstream(folder.path / "thesis" / "chapter1.txt") << "years of work\n";
-    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "thesis"), "it is a folder that a run did not write");
+    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "thesis"), "it holds \"chapter1.txt\", which no run wrote");
     std::ofstream(folder.path / "file") << "x";
     checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file"), "it exists and is not a folder");
     checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file" / "out"), "cannot write pictures to");

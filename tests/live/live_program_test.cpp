@@ -11,8 +11,10 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include "contact_sheet.h"
@@ -135,6 +137,57 @@ TEST_CASE("live program: a bad events file is one line and status 1, with nothin
     CHECK(live.status == 1);
     CHECK(live.err == "--live-events: bad token \"F@0\" (NAME@REFRESH, NAME an SDL key name or close)\n");
     CHECK(folder.files() == std::vector<std::string>{"events.txt"});
+}
+
+TEST_CASE("live program: --record never replaces a link, a FIFO, a device, a second name or the events file") {
+    ScratchFolder folder("live_program");
+    folder.write("events.txt", "close@1");
+    folder.write("target.txt", "someone's\n");
+    fs::create_symlink("target.txt", folder.path / "link");
+    fs::create_hard_link(folder.path / "target.txt", folder.path / "second.txt");
+    REQUIRE(::mkfifo((folder.path / "fifo").c_str(), 0600) == 0);
+    struct Case { std::string record, says; };
+    const Case cases[] = {{"link", "it is a symbolic link"},
+                          {"fifo", "it is a FIFO"},
+                          {"/dev/null", "it is a device"},
+                          {"second.txt", "it is a file with 2 names (hard links)"},
+                          {"events.txt", "which the run reads"},
+                          {".", "it is the current folder or holds it"}};
+    for (const Case& bad : cases) {
+        INFO(bad.record);
+        const Run live = run_in(folder, program() + " --live --live-events events.txt --record " + bad.record);
+        CHECK(live.status == 2);
+        CHECK(live.err.find('\n') == live.err.size() - 1);
+        CHECK_THAT(live.err, Catch::StartsWith("--record: cannot write") && Catch::Contains(bad.says));
+    }
+    CHECK(fs::is_symlink(folder.path / "link"));
+    CHECK(fs::is_fifo(folder.path / "fifo"));
+    CHECK(fs::is_character_file("/dev/null"));
+    CHECK(read_text(folder.path / "target.txt") == "someone's\n");
+    CHECK(read_text(folder.path / "events.txt") == "close@1");
+}
+
+TEST_CASE("live program: with no display named, --live is one line and status 1, at once") {
+    ScratchFolder folder("live_program");
+    // run_in names SDL's dummy driver; env takes it away again, with any display.
+    const Run live = run_in(folder, "timeout 20 env -u SDL_VIDEODRIVER -u DISPLAY -u WAYLAND_DISPLAY " + program() + " --live");
+    CHECK(live.status == 1);
+    CHECK(live.err == "--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
+                      "SDL_VIDEODRIVER names a driver explicitly)\n");
+    CHECK(folder.files().empty());
+}
+
+TEST_CASE("live program: SIGINT and SIGTERM end a live session as they end a run: 130 and 143") {
+    ScratchFolder folder("live_program");
+    // timeout sends the signal after a second and, preserving the status, exits as
+    // the program did: 128 + the signal when the signal ended it.
+    for (const auto& [signal, status] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+        INFO(signal);
+        const Run live = run_in(folder, std::string("timeout --preserve-status -s ") + signal + " 1 " + program() + " --live");
+        CHECK(live.status == status);
+        CHECK(live.out.empty());
+    }
+    CHECK(folder.files().empty());
 }
 
 #else

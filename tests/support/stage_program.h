@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <filesystem>
@@ -40,10 +41,12 @@ inline std::string readText(const std::filesystem::path& file) {
 }
 
 // `arguments` as they would follow the program's name in a shell; its output goes to
-// files in `folder`.
-inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string& arguments) {
+// files in `folder`. `before` is shell text run first in the same shell ("cd DIR && ",
+// "ulimit -v KB; ").
+inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string& arguments,
+                                  const std::string& before = "") {
     const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
-    std::string command = quoted(STAGE_PROGRAM);
+    std::string command = before + quoted(STAGE_PROGRAM);
     command.append(" ").append(arguments).append(" >").append(quoted(out)).append(" 2>").append(quoted(err));
     const int raw = std::system(command.c_str());
     ProgramRun run;
@@ -68,6 +71,25 @@ inline pid_t startStageProgram(const ScratchFolder& folder, const std::string& a
         ::_exit(127);
     }
     return pid;
+}
+
+inline bool isOneLine(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
+
+// A refused run: status 2, one line that mentions `says`, and nothing new in `folder`
+// beyond what was there and the captured output.
+inline void checkRefused(const ScratchFolder& folder, const std::string& command, const std::string& says,
+                         const std::string& before = "") {
+    std::vector<std::string> files = folder.files();
+    for (const char* output : {"stdout.txt", "stderr.txt"}) {
+        if (std::find(files.begin(), files.end(), output) == files.end()) files.push_back(output);
+    }
+    std::sort(files.begin(), files.end());
+    const ProgramRun run = runStageProgram(folder, command, before);
+    INFO(command << "\n" << run.error_text);
+    CHECK(run.status == 2);
+    CHECK(isOneLine(run.error_text));
+    CHECK_THAT(run.error_text, Catch::Contains(says));
+    CHECK(folder.files() == files);
 }
 
 // One line of a state dump: step,index,shape,cx,cy,angle,vx,vy,angular_velocity.
