@@ -186,7 +186,9 @@ void compare(const Request& request) {
     const json scenes[2] = {scene_with(scene, sides[0].setting, "left"), scene_with(scene, sides[1].setting, "right")};
 
     const fs::path out = browser::OutputFolder::normalized(request.out);
-    browser::OutputFolder folder(out, "final.png");
+    // The files the runs read: the folder may not hold them.
+    const fs::path inputs[] = {request.program, request.scene};
+    browser::OutputFolder folder(out, inputs);
     for (int i = 0; i < 2; ++i) {
         std::ofstream(folder.staging() / (std::string(sides[i].name) + ".json")) << scenes[i].dump(2) << '\n';
         run_side(request, sides[i], folder.staging());
