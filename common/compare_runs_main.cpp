@@ -10,7 +10,8 @@
 //   DIR/left.json, DIR/right.json   the two scenes that ran
 //   DIR/left/, DIR/right/           the two runs' own pictures
 //   DIR/final.png, DIR/frame_NNNN.png   the joined pictures
-//   DIR/animation.gif               the joined frames, when there are two or more
+//   DIR/animation.gif               the joined frames, when there are two or more and
+//                                   the OPTIONs do not say --no-gif
 // With --crop X,Y,W,H each half shows only that rectangle of its canvas (in canvas
 // pixels, so --scale zooms into it). With --ghost each joined picture also shows the first frame faintly under it
 // (needs --every), so that whatever moved since the start shows twice.
@@ -185,7 +186,8 @@ void compare(const Request& request) {
     const json scenes[2] = {scene_with(scene, sides[0].setting, "left"), scene_with(scene, sides[1].setting, "right")};
 
     const fs::path out = browser::OutputFolder::normalized(request.out);
-    const fs::path inputs[] = {request.scene};
+    // The files the runs read: the folder may not hold them.
+    const fs::path inputs[] = {request.program, request.scene};
     browser::OutputFolder folder(out, inputs);
     for (int i = 0; i < 2; ++i) {
         std::ofstream(folder.staging() / (std::string(sides[i].name) + ".json")) << scenes[i].dump(2) << '\n';
@@ -218,7 +220,10 @@ void compare(const Request& request) {
                            browser::side_by_side(halves[0], sides[0].setting, halves[1], sides[1].setting));
         if (name != "final.png") frames.push_back(name);
     }
-    if (frames.size() >= 2 && browser::gif_supported()) {
+    // --no-gif goes to both runs, and it holds for the joined frames too.
+    const bool no_gif = std::find(request.options.begin(), request.options.end(), "--no-gif") != request.options.end();
+    const bool gif = frames.size() >= 2 && browser::gif_supported() && !no_gif;
+    if (gif) {
         const int every = frame_number(frames[1]) - frame_number(frames[0]);
         const browser::Image first = browser::read_png(folder.staging() / frames[0]);
         browser::GifWriter gif(folder.staging() / "animation.gif", first.width, first.height,
@@ -228,7 +233,7 @@ void compare(const Request& request) {
     }
     folder.commit();
     std::cout << "wrote " << (out / "").string() << ": " << frames.size() + 1 << " joined pictures"
-              << (frames.size() >= 2 && browser::gif_supported() ? " and animation.gif" : "") << " (left "
+              << (gif ? " and animation.gif" : "") << " (left "
               << request.settings[0] << ", right " << request.settings[1] << ")\n";
 }
 

@@ -47,7 +47,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the collision info, and each moving shape's velocity and spin",
+    .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes",
 };
 
 class Page final : public browser::PageScripts {

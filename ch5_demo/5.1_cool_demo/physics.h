@@ -27,9 +27,11 @@
 // what the last relaxation pass found, for the tests to read.
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "collision_info.h"
@@ -48,6 +50,23 @@ struct Collision {
     CollisionInfo info;  // its normal points from the first shape towards the second
 };
 
+// What one step's relaxation passes did to a pair, added up over the passes. The engine
+// needs none of it; the overlay shows it (overlay.h).
+struct PairResponse {
+    Vec2 moved_first;   // how far positional correction moved the first shape
+    Vec2 moved_second;  // and the second: the other way, in proportion to the inverse masses
+    Vec2 normal_impulse;   // jN n: the second shape got it, the first the same turned round
+    Vec2 tangent_impulse;  // jT t, friction's, given the same way
+    Vec2 contact;          // where the impulses act (the last pass's contact point)
+    Vec2 arm_first;        // the lever arms to it from the centres, in the last pass
+    Vec2 arm_second;
+    double spin_first = 0.0;   // how much the impulses changed each angular velocity, rad/s
+    double spin_second = 0.0;
+};
+
+// A pair by the places of its shapes in the list, first < second.
+using PairKey = std::pair<std::size_t, std::size_t>;
+
 // Broad phase, then narrow phase. The info's normal is turned, where needed, to point
 // from `a` towards `b`, whichever shape's test worked it out.
 std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape& b);
@@ -59,11 +78,17 @@ public:
     // in the book; only its resolution leaves it as it is).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
+    // What the last step's passes did to every pair any of them resolved.
+    const std::map<PairKey, PairResponse>& responses() const { return responses_; }
+    // For the core, when it takes shapes out of the list: the record's places no
+    // longer name the shapes the step worked on.
+    void forgetResponses() { responses_.clear(); }
 
 private:
     void relaxationPass(ShapeList shapes, const WorldSettings& world);
 
     std::vector<Collision> collisions_;
+    std::map<PairKey, PairResponse> responses_;
 };
 
 }  // namespace engine

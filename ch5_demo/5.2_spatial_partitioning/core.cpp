@@ -62,7 +62,8 @@ void Core::keepFirstObjects(std::size_t count) {
 // The book's order (3.1 on): the frame shows the world as it stands, then runs the
 // updates that are due, so each picture shows the state from before that frame's
 // updates. From 4.3 on the book's pass no longer draws the collisions it finds. Last,
-// over everything, the overlay.
+// over everything, the overlay: it shows the world after the updates, a step (or a
+// frame's steps) ahead of the shapes drawn, a pixel or two at the book's speeds.
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
@@ -88,9 +89,13 @@ bool Core::isOutOfBounds(const RigidShape& shape) const {
 // list, so the shape after it slides into its place and misses its step. Removing once
 // every shape has taken its step removes the same shapes in the same step, and skips
 // no one (docs/errata.md). The selection is an index, as the book's gObjectNum is; one
-// past the end of the list goes back to object 0.
+// past the end of the list goes back to object 0. The shapes after a removed one move
+// up the list, so the physics' record of what the step did to each pair, kept by their
+// places in the list, would name other shapes: it is dropped.
 void Core::removeOutOfBounds() {
-    std::erase_if(all_objects_, [this](const auto& shape) { return isOutOfBounds(*shape); });
+    if (std::erase_if(all_objects_, [this](const auto& shape) { return isOutOfBounds(*shape); }) > 0) {
+        physics_.forgetResponses();
+    }
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 

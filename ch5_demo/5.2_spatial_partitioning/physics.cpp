@@ -9,11 +9,14 @@ namespace {
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
 // static one not at all, and the pair's centre of mass stays where it was.
-void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate) {
+void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
+                          PairResponse& response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
+    response.moved_first += correction * -a.invMass();
+    response.moved_second += correction * b.invMass();
 }
 
 // Where the pair touches, seen from each shape's centre: the lever arms r of Figure
@@ -66,12 +69,16 @@ void applyImpulse(RigidShape& a, RigidShape& b, const LeverArms& arms, Vec2 impu
 // would stop the slide by (1 + e) mu and caps it at jN (not Coulomb's |jT| <= mu jN;
 // see docs/errata.md). Never called for two static shapes: 1/mA + 1/mB = 0 would make
 // every share below 0 / 0.
-void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const WorldSettings& world) {
-    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
+// What it did goes into `response`.
+void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
+                      PairResponse& response) {
+    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
 
     const Vec2 normal = info.normal();  // from a to b
     const LeverArms arms = leverArms(a, b, info);
+    response.contact = a.center() + arms.a;
+    response.arm_first = arms.a;
+    response.arm_second = arms.b;
     const Vec2 relative_velocity = velocityAt(b, arms.b) - velocityAt(a, arms.a);
     const double normal_speed = relative_velocity.dot(normal);
     // Moving apart already: the velocities need no help. (The positions above were
@@ -84,7 +91,9 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
 
     // Equation 5: after the impulse the contact's normal speed is -e times what it was.
     const double jN = -(1 + restitution) * normal_speed / impulseResponse(a, b, arms, normal);
+    const double spin_a = a.angularVelocity(), spin_b = b.angularVelocity();
     applyImpulse(a, b, arms, normal * jN);
+    response.normal_impulse += normal * jN;
 
     // Equation 6. The tangent points against the sliding, from the velocity before the
     // normal impulse (which has changed the spin, and so the sliding, since).
@@ -92,6 +101,9 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
     double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / impulseResponse(a, b, arms, tangent);
     jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, arms, tangent * jT);
+    response.tangent_impulse += tangent * jT;
+    response.spin_first += a.angularVelocity() - spin_a;
+    response.spin_second += b.angularVelocity() - spin_b;
 }
 
 }  // namespace
@@ -111,6 +123,7 @@ std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& 
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
+    responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
     broad_phase_.startStep(shapes, world.relaxation_iterations);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
@@ -130,7 +143,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             // resolution works on, for the tests, and leaves such a pair out.
             if (a.isStatic() && b.isStatic()) return false;
             if (last_pass) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world);
+            resolveCollision(a, b, *info, world, responses_[{i, j}]);
             return true;
         });
         // The book runs every pass. But a pass that changed nothing left every shape's

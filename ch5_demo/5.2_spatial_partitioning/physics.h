@@ -32,6 +32,8 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "broad_phase.h"
@@ -40,6 +42,23 @@
 #include "world_settings.h"
 
 namespace engine {
+
+// What one step's relaxation passes did to a pair, added up over the passes. The engine
+// needs none of it; the overlay shows it (overlay.h).
+struct PairResponse {
+    Vec2 moved_first;   // how far positional correction moved the first shape
+    Vec2 moved_second;  // and the second: the other way, in proportion to the inverse masses
+    Vec2 normal_impulse;   // jN n: the second shape got it, the first the same turned round
+    Vec2 tangent_impulse;  // jT t, friction's, given the same way
+    Vec2 contact;          // where the impulses act (the last pass's contact point)
+    Vec2 arm_first;        // the lever arms to it from the centres, in the last pass
+    Vec2 arm_second;
+    double spin_first = 0.0;   // how much the impulses changed each angular velocity, rad/s
+    double spin_second = 0.0;
+};
+
+// A pair by the places of its shapes in the list, first < second.
+using PairKey = std::pair<std::size_t, std::size_t>;
 
 // Two shapes the pass found colliding, by their places in the list; first < second.
 struct Collision {
@@ -62,12 +81,18 @@ public:
     // step's last (physics.cpp).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
+    // What the last step's passes did to every pair any of them resolved.
+    const std::map<PairKey, PairResponse>& responses() const { return responses_; }
+    // For the core, when it takes shapes out of the list: the record's places no
+    // longer name the shapes the step worked on.
+    void forgetResponses() { responses_.clear(); }
     // The pairs the broad phase handed out over the last collision() call.
     const PairStatistics& pairStatistics() const { return broad_phase_.statistics(); }
     const BroadPhase& broadPhase() const { return broad_phase_; }
 
 private:
     std::vector<Collision> collisions_;
+    std::map<PairKey, PairResponse> responses_;
     BroadPhase broad_phase_;
 };
 

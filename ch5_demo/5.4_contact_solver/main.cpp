@@ -47,7 +47,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the collision info, and each moving shape's velocity and spin; the grid's cells and candidate pairs; on the sequential impulse solver its contacts: faces, points, impulses",
+    .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells and candidate pairs; on the sequential impulse solver its contacts: faces, points, impulses",
 };
 
 class Page final : public browser::PageScripts {

@@ -14,6 +14,21 @@
 // velocity as a curved arrow round its centre, turning the way the shape turns, as far
 // as it turns in half a second.
 //
+// Positional correction moves overlapping shapes apart, a little each relaxation pass:
+// an arrow from each corrected shape's centre shows how far the passes of the last step
+// moved it in all, ten times larger so that fractions of a pixel show (and cut at 60 px,
+// where shapes made inside each other are pushed out by tens of pixels in one step).
+//
+// From 4.3 the book no longer draws the collision info; the overlay still does. Each
+// resolved pair gets the impulses of the last step at its contact: the normal
+// impulse (the bounce) and the tangent impulse (friction), as the second shape received
+// them (the first got the same, turned round), with their sizes in numbers.
+//
+// From 4.4 the impulses act at a contact point and turn the shapes: they are drawn
+// there, with the lever arms from both centres to it, and each shape of the pair gets
+// a second curved arrow, outside its spin, for the change of spin the impulses gave it
+// (as far as that change turns the shape in half a second).
+//
 // 5.2's grid broad phase adds its own (grid_overlay.h): the grid's cells, the candidate
 // pairs on its list, and the pair tests a pass saves.
 //

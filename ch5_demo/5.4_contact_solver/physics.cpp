@@ -9,11 +9,14 @@ namespace {
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
 // static one not at all, and the pair's centre of mass stays where it was.
-void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate) {
+void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
+                          PairResponse& response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
+    response.moved_first += correction * -a.invMass();
+    response.moved_second += correction * b.invMass();
 }
 
 // Where the pair touches, seen from each shape's centre: the lever arms r of Figure
@@ -76,14 +79,18 @@ double frictionImpulse(double sliding, double response, double jN, double restit
 // law of restitution at the contact, Equation 4). Along the tangent, friction takes
 // away part of the sliding (see frictionImpulse; docs/errata.md, "Friction"). Never
 // called for two static shapes: 1/mA + 1/mB = 0 would make every share below 0 / 0.
-void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
-                      const WorldSettings& world) {
-    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate);
+// What it did goes into `response`.
+void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
+                      PairResponse& response) {
+    if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
 
     const Vec2 normal = info.normal();  // from a to b
     // Without rotation the impulses act as if through the centres: zero lever arms drop
     // every angular term (w x r, (r x d)^2 / I, r x j) and leave the rest as it is.
     const LeverArms arms = world.rotation ? leverArms(a, b, info) : LeverArms{};
+    response.contact = a.center() + arms.a;
+    response.arm_first = arms.a;
+    response.arm_second = arms.b;
     const Vec2 relative_velocity = velocityAt(b, arms.b) - velocityAt(a, arms.a);
     const double normal_speed = relative_velocity.dot(normal);
     // Moving apart already: the velocities need no help. (The positions above were
@@ -96,28 +103,34 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info,
 
     // Equation 5: after the impulse the contact's normal speed is -e times what it was.
     const double jN = -(1 + restitution) * normal_speed / impulseResponse(a, b, arms, normal);
+    const double spin_a = a.angularVelocity(), spin_b = b.angularVelocity();
     applyImpulse(a, b, arms, normal * jN);
-    if (!world.friction) return;
-
-    // Equation 6. The book takes the tangent, and the sliding, from the velocity before
-    // the normal impulse. But that impulse has turned the shapes, and so changed the
-    // sliding: stopping a slide that is no longer there can speed the contact up and
-    // create energy (docs/errata.md, "Friction from the velocity before the bounce").
-    // The Coulomb model measures the sliding after the normal impulse, as it is when
-    // friction acts; an impulse that at most stops it can only take energy away.
-    const Vec2 sliding_velocity = world.friction_model == FrictionModel::coulomb
-                                      ? velocityAt(b, arms.b) - velocityAt(a, arms.a)
-                                      : relative_velocity;
-    const Vec2 tangent = (sliding_velocity - normal * sliding_velocity.dot(normal)).normalize() * -1;
-    const double jT = frictionImpulse(sliding_velocity.dot(tangent), impulseResponse(a, b, arms, tangent), jN,
-                                      restitution, friction, world.friction_model);
-    applyImpulse(a, b, arms, tangent * jT);
+    response.normal_impulse += normal * jN;
+    if (world.friction) {
+        // Equation 6. The book takes the tangent, and the sliding, from the velocity before
+        // the normal impulse. But that impulse has turned the shapes, and so changed the
+        // sliding: stopping a slide that is no longer there can speed the contact up and
+        // create energy (docs/errata.md, "Friction from the velocity before the bounce").
+        // The Coulomb model measures the sliding after the normal impulse, as it is when
+        // friction acts; an impulse that at most stops it can only take energy away.
+        const Vec2 sliding_velocity = world.friction_model == FrictionModel::coulomb
+                                          ? velocityAt(b, arms.b) - velocityAt(a, arms.a)
+                                          : relative_velocity;
+        const Vec2 tangent = (sliding_velocity - normal * sliding_velocity.dot(normal)).normalize() * -1;
+        const double jT = frictionImpulse(sliding_velocity.dot(tangent), impulseResponse(a, b, arms, tangent), jN,
+                                          restitution, friction, world.friction_model);
+        applyImpulse(a, b, arms, tangent * jT);
+        response.tangent_impulse += tangent * jT;
+    }
+    response.spin_first += a.angularVelocity() - spin_a;
+    response.spin_second += b.angularVelocity() - spin_b;
 }
 
 }  // namespace
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
+    responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
     if (world.solver == SolverKind::sequential_impulse) return contact_solver_.step(shapes, broad_phase_, world, collisions_);
     broad_phase_.startStep(shapes, world.relaxation_iterations);
@@ -138,7 +151,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             // resolution works on, for the tests, and leaves such a pair out.
             if (a.isStatic() && b.isStatic()) return false;
             if (last_pass) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world);
+            resolveCollision(a, b, *info, world, responses_[{i, j}]);
             return true;
         });
         // The book runs every pass. But a pass that changed nothing left every shape's

@@ -10,10 +10,12 @@
 #include "stage_fixture.h"
 
 #if __has_include("world_settings.h")
-// Chapter 4: the book's world (movement off) without positional correction, so that
-// the two circles stay where they are: they touch at rest, and no impulse moves them.
+// Chapter 4: the book's world without positional correction, and with movement off
+// (5.1's demo starts it on), so that the two circles stay where they are: they touch at
+// rest, and no impulse moves them.
 template <class Settings>
 Settings atRest(Settings settings) {
+    settings.movement = false;
     if constexpr (requires { settings.positional_correction; }) settings.positional_correction = false;
     return settings;
 }

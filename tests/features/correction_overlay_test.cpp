@@ -9,7 +9,8 @@
 #include "world_fixture.h"
 
 TEST_CASE("correction overlay: the move of one pass, ten times longer, from the moved centre") {
-    engine::WorldSettings settings = engine::kBookWorld;  // movement off: only the correction moves shapes
+    // Movement off (5.1's demo starts it on): only the correction moves shapes.
+    engine::WorldSettings settings = test::world(false);
     settings.positional_correction = true;
     settings.relaxation_iterations = 1;
     test::WorldFixture page(settings);

@@ -10,7 +10,8 @@
 #include "world_fixture.h"
 
 TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's law of restitution") {
-    engine::WorldSettings settings = engine::kBookWorld;  // movement off: only the response acts
+    // Movement off (5.1's demo starts it on): only the response acts.
+    engine::WorldSettings settings = test::world(false);
     settings.positional_correction = false;
     settings.relaxation_iterations = 1;
     test::WorldFixture page(settings);

@@ -7,7 +7,8 @@
 #include "world_fixture.h"
 
 TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres to the contact the impulses act at") {
-    engine::WorldSettings settings = engine::kBookWorld;  // movement off: only the response acts
+    // Movement off (5.1's demo starts it on): only the response acts.
+    engine::WorldSettings settings = test::world(false);
     settings.positional_correction = false;
     settings.relaxation_iterations = 1;
     test::WorldFixture page(settings);

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "circle.h"
-#include "stage_fixture.h"
+#include "world_fixture.h"
 
 namespace {
 
@@ -22,12 +22,14 @@ browser::Color legendColor(const browser::Document& document, const std::string&
 }  // namespace
 
 TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as far as half a second turns") {
-    test::StageFixture page;  // the book's world: movement off, so nothing moves
+    // Movement off (5.1's demo starts it on), so nothing moves.
+    test::WorldFixture page(test::world(false));
     engine::Circle& ball = page.core.add(engine::Circle({300.5, 200.5}, 10));
     ball.setVelocity({60, 0});     // 30 px in 0.5 s: the tip at (330.5, 200.5)
     ball.setAngularVelocity(2.0);  // 1 rad in 0.5 s
     page.window.overlay = true;
-    page.frame();
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
     const browser::Document& document = page.window.document;
     const browser::Image& pixels = document.canvas.pixels();
     const browser::Color velocity = legendColor(document, "velocity");
