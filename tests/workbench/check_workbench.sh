@@ -84,21 +84,23 @@ diff -r --exclude=README.md --exclude=expected --exclude=main.cpp ch3_collision/
 grep -q '\.id = "wb_s3_3"' workbench/3.3_rectangle_collision/main.cpp || fail "3.3's main.cpp does not run as wb_s3_3"
 grep -q '^- New in 3.3, failing until you write it: `wb_s3_3.rectangle_collision`.$' \
   workbench/3.3_rectangle_collision/README.md || fail "3.3's README does not name rectangle_collision as new"
-grep -q '^- New in 4.3, failing until you write it: `wb_s4_3.collision_impulse`.$' \
+grep -q '^- New in 4.3, failing until you write it: `wb_s4_3.collision_impulse`, `wb_s4_3.impulse_overlay`.$' \
   workbench/4.3_collision_impulse/README.md || fail "4.3's README does not name collision_impulse as new"
 ok "3.3 is 3.2 with 3.3's default run; the READMEs name the new features"
 
-# stage, our folder, its new feature, and a feature that checks the stage's own book scene
-# (4.3's MyGame adds a platform, so scene_files waits for the reader's my_game.cpp too)
+# stage, our folder, its new feature, a feature that checks the stage's own book scene
+# (4.3's MyGame adds a platform, so scene_files waits for the reader's my_game.cpp too),
+# and the overlay's layer of the new feature (4.3 draws the impulses it adds), if any
 for made in "3.3 ch3_collision/3.3_rectangle_collision rectangle_collision" \
-            "4.3 ch4_response/4.3_collision_impulse collision_impulse scene_files"; do
-  read -r number ours new scene_feature <<<"$made"
+            "4.3 ch4_response/4.3_collision_impulse collision_impulse scene_files impulse_overlay"; do
+  read -r number ours new scene_feature overlay_feature <<<"$made"
   wb=wb_s${number/./_}
   folder=workbench/$(basename "$ours")
   echo "== $wb as made: $new fails, what the stage before had passes"
   SECONDS=0
   run_tests "$wb" "$wb.before.log"
-  mapfile -t had < <(features_of "$(basename "$ours")" | grep -vx "$wb.$new" | grep -vx "$wb.${scene_feature:-none}")
+  mapfile -t had < <(features_of "$(basename "$ours")" | grep -vx "$wb.$new" | grep -vx "$wb.${scene_feature:-none}" |
+    grep -vx "$wb.${overlay_feature:-none}")
   ((${#had[@]} >= 7)) || fail "$wb: the README lists only ${#had[@]} earlier features"
   expect "$wb.before.log" Failed "$wb.$new"
   expect "$wb.before.log" Passed "${had[@]}"
@@ -110,7 +112,8 @@ for made in "3.3 ch3_collision/3.3_rectangle_collision rectangle_collision" \
   SECONDS=0
   find "$ours" -maxdepth 1 -type f ! -name README.md -exec cp {} "$folder"/ \;
   run_tests "$wb" "$wb.after.log"
-  expect "$wb.after.log" Passed "${had[@]}" "$wb.$new" ${scene_feature:+"$wb.$scene_feature"} "$wb.stage" "$wb.pictures"
+  expect "$wb.after.log" Passed "${had[@]}" "$wb.$new" ${scene_feature:+"$wb.$scene_feature"} \
+    ${overlay_feature:+"$wb.$overlay_feature"} "$wb.stage" "$wb.pictures"
   grep -q "100% tests passed" "$wb.after.log" || fail "$wb: not every test passed (log: $wb.after.log)"
   ok "all of $wb's tests pass ($SECONDS s)"
 done
