@@ -25,11 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kFinalPicture = "final.png";
-constexpr const char* kContactSheet = "contact_sheet.png";
-constexpr const char* kAnimation = "animation.gif";
-constexpr const char* kUnfinishedAnimation = "animation.gif.partial";  // until its last frame is in
-
 std::string frame_picture_name(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -240,16 +235,6 @@ double encoding_bound(double page_pixels, const Options& options) {
     const double pictures = 1.0 + frames_taken(options.frames, options.every) * 1.25;
     const double gif_frames = options.gif ? frames_taken(options.frames, options.gif_every) : 0.0;
     return page_pixels * (pictures + kGifPixelCost * gif_frames);
-}
-
-bool is_picture_name(std::string_view name) {
-    if (name == kFinalPicture || name == kContactSheet || name == kAnimation || name == kUnfinishedAnimation) return true;
-    constexpr std::string_view kPrefix = "frame_", kSuffix = ".png";
-    if (!name.starts_with(kPrefix) || !name.ends_with(kSuffix) || name.size() <= kPrefix.size() + kSuffix.size()) {
-        return false;
-    }
-    const std::string_view number = name.substr(kPrefix.size(), name.size() - kPrefix.size() - kSuffix.size());
-    return number.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
 int run(PageScripts& scripts, Window& window, const Options& options) {

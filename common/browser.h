@@ -51,10 +51,6 @@ double contact_memory_bound(const StepCost& step, const Options& options);
 // size of one saved page (the canvas and the echo panel beside it, times --scale squared).
 double encoding_bound(double page_pixels, const Options& options);
 
-// The names a run gives the files of its folder (final.png, frame_NNNN.png,
-// contact_sheet.png, animation.gif and its partial file).
-bool is_picture_name(std::string_view name);
-
 // The exit status of a run that ran out of memory although its budget let it start (a
 // machine with less memory than the budget allows for): one line on stderr, nothing written.
 inline constexpr int kOutOfMemoryStatus = 4;

@@ -154,4 +154,14 @@ void OutputFolder::add_to_manifest(const fs::path& out, std::string_view name) {
     }
 }
 
+bool is_picture_name(std::string_view name) {
+    if (name == kFinalPicture || name == kContactSheet || name == kAnimation || name == kUnfinishedAnimation) return true;
+    constexpr std::string_view kPrefix = "frame_", kSuffix = ".png";
+    if (!name.starts_with(kPrefix) || !name.ends_with(kSuffix) || name.size() <= kPrefix.size() + kSuffix.size()) {
+        return false;
+    }
+    const std::string_view number = name.substr(kPrefix.size(), name.size() - kPrefix.size() - kSuffix.size());
+    return number.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
 }  // namespace browser

@@ -30,6 +30,17 @@ namespace browser {
 // The manifest a run leaves in its folder: "# ..." comment lines, then one name a line.
 inline constexpr const char* kManifest = ".manifest";
 
+// The files a run writes into its folder.
+inline constexpr const char* kFinalPicture = "final.png";
+inline constexpr const char* kContactSheet = "contact_sheet.png";
+inline constexpr const char* kAnimation = "animation.gif";
+inline constexpr const char* kUnfinishedAnimation = "animation.gif.partial";  // until its last frame is in
+
+// The names a run gives the files of its folder (final.png, frame_NNNN.png,
+// contact_sheet.png, animation.gif and its partial file).
+bool is_picture_name(std::string_view name);
+
+
 class OutputFolder {
 public:
     // Checks that `out` may be replaced and makes the staging folder. `inputs` are the

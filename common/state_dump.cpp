@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <optional>
 
-#include "browser.h"  // is_picture_name
 #include "message_text.h"
 #include "output_folder.h"
 #include "scene_file.h"
