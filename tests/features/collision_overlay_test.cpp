@@ -7,6 +7,7 @@
 #include <string>
 
 #include "circle.h"
+#include "legend_color.h"
 #include "stage_fixture.h"
 
 #if __has_include("world_settings.h")
@@ -30,19 +31,6 @@ struct Page {
 };
 #endif
 
-namespace {
-
-// The colour of the legend line that starts with `prefix`.
-browser::Color legendColor(const browser::Document& document, const std::string& prefix) {
-    for (const browser::LegendEntry& entry : document.legend) {
-        if (entry.text.rfind(prefix, 0) == 0) return entry.color;
-    }
-    FAIL("no legend line starts with \"" << prefix << "\"");
-    return {};
-}
-
-}  // namespace
-
 TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in the legend's colours") {
     Page page;
     // Radius 20, centres 30 apart on the row of pixel centres y = 100.5: they overlap by
@@ -56,11 +44,11 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
     const browser::Document& document = page.window.document;
     const browser::Image& pixels = document.canvas.pixels();
     // The markers' crosses meet on those pixel centres, and they are drawn last.
-    CHECK(pixels.at(210, 100) == legendColor(document, "start"));
-    CHECK(pixels.at(220, 100) == legendColor(document, "end"));
+    CHECK(pixels.at(210, 100) == test::legendColor(document, "start"));
+    CHECK(pixels.at(220, 100) == test::legendColor(document, "end"));
     // The normal runs 20 px right from the start along the row: (213.5, 100.5) is on it,
     // 2 px or more from each marker's strokes and inside both circles.
-    CHECK(pixels.at(213, 100) == legendColor(document, "normal"));
+    CHECK(pixels.at(213, 100) == test::legendColor(document, "normal"));
     // It ends at x = 230.5: two pixels on, the row is white.
     CHECK(pixels.at(232, 100) == browser::colors::kWhite);
     const auto counted = std::find_if(document.legend.begin(), document.legend.end(), [](const auto& entry) {

@@ -7,19 +7,8 @@
 #include <string>
 
 #include "circle.h"
+#include "legend_color.h"
 #include "world_fixture.h"
-
-namespace {
-
-browser::Color legendColor(const browser::Document& document, const std::string& prefix) {
-    for (const browser::LegendEntry& entry : document.legend) {
-        if (entry.text.rfind(prefix, 0) == 0) return entry.color;
-    }
-    FAIL("no legend line starts with \"" << prefix << "\"");
-    return {};
-}
-
-}  // namespace
 
 TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as far as half a second turns") {
     // Movement off (5.1's demo starts it on), so nothing moves.
@@ -32,7 +21,7 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     page.core.runGameLoop();
     const browser::Document& document = page.window.document;
     const browser::Image& pixels = document.canvas.pixels();
-    const browser::Color velocity = legendColor(document, "velocity");
+    const browser::Color velocity = test::legendColor(document, "velocity");
     // On the shaft, 9.5 px outside the circle and 10 px before the tip: fully covered.
     CHECK(pixels.at(320, 200) == velocity);
     // Past the tip, nothing.
