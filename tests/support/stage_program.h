@@ -23,6 +23,13 @@
 
 namespace test {
 
+// g++ and clang both define __SANITIZE_ADDRESS__ under -fsanitize=address (clang from 14 on).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool underAddressSanitizer = true;
+#else
+inline constexpr bool underAddressSanitizer = false;
+#endif
+
 struct ProgramRun {
     int status = -1;         // the exit status; -1 when the program did not exit normally
     std::string error_text;  // what it printed to stderr
