@@ -139,6 +139,23 @@ TEST_CASE("movement: a static body feels no gravity") {
     CHECK(floor.velocity() == Vec2{0, 0});
 }
 
+TEST_CASE("movement: the keys set a static body moving, and it moves as in the book, unaccelerated") {
+    // The keys act on whatever is selected, a static body too. Gravity cannot move it
+    // (1/m is 0), but the velocity the keys give it does, as the book integrates it:
+    // L three times is 3 px/s to the right, O twice 0.2 rad/s, so 60 steps of 1/60 s
+    // later it has moved 3 px and turned 0.2 rad, and its velocities are unchanged.
+    test::WorldFixture page(test::world(true));
+    engine::Rectangle& wall = page.core.add(engine::Rectangle({100, 200}, 10, 100, {.mass = 0}));
+    page.press(Key::Digit0);
+    page.press(Key::L, 3);
+    page.press(Key::O, 2);
+    page.steps(60);
+    CHECK_THAT(wall.center(), test::near(Vec2{103, 200}, kExact));
+    CHECK_THAT(wall.angle(), test::near(0.2, 1e-12));
+    CHECK(wall.velocity() == Vec2{3, 0});
+    CHECK_THAT(wall.angularVelocity(), test::near(0.2, 1e-15));
+}
+
 TEST_CASE("movement: the world's dt is both the integration step and the loop's fixed step") {
     // dt = 1/30 s with 60 Hz frames: an update every second frame, each moving the
     // ball by its new velocity times 1/30 s.
