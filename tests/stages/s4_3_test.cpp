@@ -54,6 +54,24 @@ TEST_CASE("s4_3: an off-centre hit changes velocities only; nothing turns") {
     CHECK(ball.angularVelocity() == 0);
 }
 
+TEST_CASE("s4_3: a ball hitting a floor at a slant: e and mu of the less bouncy, less gripping surface") {
+    // No gravity. The floor (static, e = 1, mu = 1) is added first, so the normal
+    // points from it up to the ball: n = (0, -1). The ball (mass 1, e = 0.5, mu = 0.2)
+    // is 1 px into it, moving at v = (10, 100). The pair takes e = min(0.5, 1) = 0.5 and
+    // mu = min(0.2, 1) = 0.2. Normal speed v . n = -100, so jN = -(1 + e)(-100) / 1 =
+    // 150: vy = 100 - 150 = -50, e times the speed it came in with. The slide is
+    // v - (v . n) n = (10, 0), so the tangent is (-1, 0), and jT = (1 + e) mu 10 = 3,
+    // under the cap jN: vx = 10 - 3 = 7. The later relaxation passes find the ball
+    // moving apart, and change no velocity.
+    test::WorldFixture page(test::world(true, {0, 0}));
+    page.core.add(engine::Rectangle({400, 400}, 800, 20, {.mass = 0, .friction = 1, .restitution = 1}));
+    engine::Circle& ball =
+        page.core.add(engine::Circle({400, 381}, 10, {.mass = 1, .friction = 0.2, .restitution = 0.5}));
+    ball.setVelocity({10, 100});
+    page.steps(1);
+    CHECK_THAT(ball.velocity(), test::near(Vec2{7, -50}, 1e-12));
+}
+
 // The README's walkthrough ("Play it live"): a circle and a box sent down onto the
 // platform, then H at two seconds.
 TEST_CASE("s4_3: README walkthrough: the shapes land on the platform, slow down, and never turn") {
