@@ -101,9 +101,8 @@ const Entry kEntries[] = {
       "which the angular impulse of 4.4 on uses"},
      [](const Divergence& d) {
          return d.kind == DivergenceKind::value &&
-                std::any_of(d.differing.begin(), d.differing.end(), [](const DifferingBody& body) {
-                    return body.shape == "circle";
-                });
+                std::any_of(d.differing.begin(), d.differing.end(),
+                            [](const DifferingBody& body) { return body.shape == "circle"; });
      }},
 };
 
@@ -161,7 +160,8 @@ std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name) {
     while (std::getline(in, line)) {
         ++line_number;
         const std::vector<std::string_view> parts = split_commas(line);
-        if (parts.size() != 3 + kDumpFields.size()) throw refuse("a row has 9 fields, this has " + std::to_string(parts.size()));
+        if (parts.size() != 3 + kDumpFields.size())
+            throw refuse("a row has 9 fields, this has " + std::to_string(parts.size()));
         DumpRow row;
         const auto step = read_number<long>(parts[0]);
         const auto index = read_number<std::size_t>(parts[1]);
@@ -285,7 +285,8 @@ std::string describe(const Divergence& divergence, std::string_view name_a, std:
             const DifferingBody& body = divergence.differing[i];
             text += " body " + std::to_string(body.index) + " (" + body.shape + ", " + std::string(body.field) + ")";
         }
-        if (divergence.differing.size() > 9) text += " and " + std::to_string(divergence.differing.size() - 9) + " more";
+        if (divergence.differing.size() > 9)
+            text += " and " + std::to_string(divergence.differing.size() - 9) + " more";
         text += "\n";
     }
     if (divergence.step == 0) {
@@ -296,7 +297,8 @@ std::string describe(const Divergence& divergence, std::string_view name_a, std:
         return text + "known difference: docs/errata.md#" + heading_anchor(known->heading) + " (\"" +
                std::string(known->heading) + "\"): " + std::string(known->sign) + "\n";
     }
-    return text + "no entry of docs/errata.md explains this for " + std::string(stage) + ": a difference to look into\n";
+    return text + "no entry of docs/errata.md explains this for " + std::string(stage) +
+           ": a difference to look into\n";
 }
 
 }  // namespace browser

@@ -25,14 +25,16 @@ int main(int argc, char** argv) {
     browser::DumpTolerance tolerance;
     app.add_option("A", file_a, "the first dump (e.g. our stage's --dump)")->required();
     app.add_option("B", file_b, "the second dump (e.g. tools/book_runner's)")->required();
-    app.add_option("--stage", stage, "the book project both ran, X.Y (4.1 to 5.1): looks the difference up in docs/errata.md")
+    app.add_option("--stage", stage,
+                   "the book project both ran, X.Y (4.1 to 5.1): looks the difference up in docs/errata.md")
         ->check([](const std::string& text) {
             return text.size() == 3 && text[1] == '.' && std::isdigit(static_cast<unsigned char>(text[0])) &&
                            std::isdigit(static_cast<unsigned char>(text[2]))
                        ? std::string()
                        : std::string("a book project is X.Y, such as 4.4");
         });
-    app.add_option("--absolute", tolerance.absolute, "absolute tolerance (default 1e-9)")->check(CLI::NonNegativeNumber);
+    app.add_option("--absolute", tolerance.absolute, "absolute tolerance (default 1e-9)")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--relative", tolerance.relative, "tolerance relative to the larger number (default 1e-9)")
         ->check(CLI::NonNegativeNumber);
     try {
@@ -43,7 +45,8 @@ int main(int argc, char** argv) {
         return kTrouble;
     }
     try {
-        const auto divergence = browser::first_divergence(browser::read_dump(file_a), browser::read_dump(file_b), tolerance);
+        const auto divergence =
+            browser::first_divergence(browser::read_dump(file_a), browser::read_dump(file_b), tolerance);
         if (!divergence) {
             std::cout << "no divergence: " << file_a << " and " << file_b << " agree at every step\n";
             return kAgree;

@@ -103,12 +103,13 @@ TEST_CASE("first_divergence finds the stand-in's planted difference against stag
     test::ScratchFolder folder("book_runner_diverge");
     const fs::path scene = writeFile(folder, "fall.json", kFallScene);
     const fs::path ours = folder.path / "ours.csv", book = folder.path / "book.csv";
-    const test::ProgramRun stage = test::runStageProgram(
-        folder, "--scene " + test::quoted(scene) + " --keys '' --frames 60 --every 0 --out " +
-                    test::quoted(folder.path / "out") + " --dump " + test::quoted(ours));
+    const test::ProgramRun stage =
+        test::runStageProgram(folder, "--scene " + test::quoted(scene) + " --keys '' --frames 60 --every 0 --out " +
+                                          test::quoted(folder.path / "out") + " --dump " + test::quoted(ours));
     INFO(stage.error_text);
     REQUIRE(stage.status == 0);
-    REQUIRE(runBook(folder, "--scene " + test::quoted(scene) + " --frames 60 --dump " + test::quoted(book)).status == 0);
+    REQUIRE(runBook(folder, "--scene " + test::quoted(scene) + " --frames 60 --dump " + test::quoted(book)).status ==
+            0);
 
     // Both loops run the same fixed updates on the same clock.
     const auto our_rows = test::readDump(ours), book_rows = test::readDump(book);
@@ -117,15 +118,16 @@ TEST_CASE("first_divergence finds the stand-in's planted difference against stag
 
     // The boxes agree; the circle parts at step 1, where ours has moved by g dt^2 and
     // the stand-in's explicit Euler has not moved down at all.
-    const Run compare = runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " " + test::quoted(ours) + " " +
-                                               test::quoted(book) + " --stage 4.1");
+    const Run compare = runCommand(
+        folder, test::quoted(FIRST_DIVERGENCE) + " " + test::quoted(ours) + " " + test::quoted(book) + " --stage 4.1");
     INFO(compare.out << compare.error);
     CHECK(compare.status == 1);
     CHECK_THAT(compare.out, Catch::Contains("step 1, body 1 (circle): cy is 60.008333333333333 in "));
     CHECK_THAT(compare.out, Catch::Contains(" and 60 in "));
     CHECK_THAT(compare.out, Catch::Contains("no entry of docs/errata.md explains this for 4.1"));
     // A dump compared with itself agrees.
-    const Run same = runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " " + test::quoted(book) + " " + test::quoted(book));
+    const Run same =
+        runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " " + test::quoted(book) + " " + test::quoted(book));
     CHECK(same.status == 0);
     CHECK_THAT(same.out, Catch::Contains("no divergence"));
 }
@@ -135,7 +137,8 @@ TEST_CASE("Math.random is our seeded generator: F throws the shape our stages wo
     const fs::path dump = folder.path / "book.csv";
     // No scene: the stand-in's own MyGame, one static box at (100, 100); F before frame 0.
     for (const std::uint64_t seed : {2017ull, 7ull}) {
-        const Run run = runBook(folder, "--keys f --frames 2 --seed " + std::to_string(seed) + " --dump " + test::quoted(dump));
+        const Run run =
+            runBook(folder, "--keys f --frames 2 --seed " + std::to_string(seed) + " --dump " + test::quoted(dump));
         INFO(run.error);
         REQUIRE(run.status == 0);
         const auto made = rowsOf(test::readDump(dump), 1);
@@ -156,9 +159,11 @@ TEST_CASE("a page that throws in every frame stops updating, as a browser's does
     test::ScratchFolder folder("book_runner_throw");
     const fs::path scene = writeFile(folder, "fall.json", kFallScene);
     const fs::path full = folder.path / "full.csv", frozen = folder.path / "frozen.csv";
-    REQUIRE(runBook(folder, "--scene " + test::quoted(scene) + " --frames 10 --dump " + test::quoted(full)).status == 0);
+    REQUIRE(runBook(folder, "--scene " + test::quoted(scene) + " --frames 10 --dump " + test::quoted(full)).status ==
+            0);
     // Select body 2, then X leaves only body 0: the echo of body 2 throws from frame 5 on.
-    const Run run = runBook(folder, "--scene " + test::quoted(scene) + " --keys '2 x@5' --frames 10 --dump " + test::quoted(frozen));
+    const Run run = runBook(
+        folder, "--scene " + test::quoted(scene) + " --keys '2 x@5' --frames 10 --dump " + test::quoted(frozen));
     CHECK(run.status == 0);
     CHECK_THAT(run.error, Catch::Contains("the book's page threw 5 time(s)"));
     const auto rows = test::readDump(frozen);
@@ -183,10 +188,12 @@ TEST_CASE("the runner refuses what it cannot run with one line, and writes nothi
         CHECK_THAT(run.error, Catch::StartsWith("book_runner: ") && Catch::Contains(says));
         CHECK_FALSE(fs::exists(dump));
     };
-    const fs::path typo = writeFile(folder, "typo.json", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radius": 3, "mas": 2}]})");
+    const fs::path typo =
+        writeFile(folder, "typo.json", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radius": 3, "mas": 2}]})");
     refused("--scene " + test::quoted(typo) + " --frames 5", "bodies[0].mas: unknown key");
     const fs::path step = writeFile(folder, "step.json", R"({"world": {"dt": 0.01}, "bodies": []})");
-    refused("--scene " + test::quoted(step) + " --frames 5", "world.dt: the book's code keeps this in a private variable");
+    refused("--scene " + test::quoted(step) + " --frames 5",
+            "world.dt: the book's code keeps this in a private variable");
     const fs::path grid = writeFile(folder, "grid.json", R"({"world": {"broad_phase": "grid"}, "bodies": []})");
     refused("--scene " + test::quoted(grid) + " --frames 5", "world.broad_phase: the book's code has no such setting");
     refused("--keys 'f*0' --frames 5", "bad key script token \"f*0\"");

@@ -56,9 +56,11 @@ TEST_CASE("identical dumps, and dumps within the tolerance, do not diverge", "[f
 }
 
 TEST_CASE("names the first step, the first body and its first field that differ", "[first_divergence_test]") {
-    const auto a = dump(kStart + kStep1Box + kStep1Circle + "2,0,rectangle,100,50.3,0,0,2,0\n2,1,circle,300.2,60.1,0.02,6,1,0.5\n");
+    const auto a = dump(kStart + kStep1Box + kStep1Circle +
+                        "2,0,rectangle,100,50.3,0,0,2,0\n2,1,circle,300.2,60.1,0.02,6,1,0.5\n");
     // Step 1 agrees; at step 2 the circle's cy and vy differ, then the box's vx.
-    const auto b = dump(kStart + kStep1Box + kStep1Circle + "2,0,rectangle,100,50.3,0,0.5,2,0\n2,1,circle,300.2,60,0.02,6,1.5,0.5\n");
+    const auto b = dump(kStart + kStep1Box + kStep1Circle +
+                        "2,0,rectangle,100,50.3,0,0.5,2,0\n2,1,circle,300.2,60,0.02,6,1.5,0.5\n");
     const auto found = browser::first_divergence(a, b);
     REQUIRE(found.has_value());
     CHECK(found->kind == DivergenceKind::value);
@@ -91,7 +93,8 @@ TEST_CASE("a body only one dump has, a shape that differs, a run that stops", "[
         CHECK(found->bodies_b == 1);
     }
     SECTION("a rectangle where the other has a circle") {
-        const auto found = browser::first_divergence(a, dump(kStart + kStep1Box + "1,1,rectangle,300.1,60,0.01,6,0,0.5\n"));
+        const auto found =
+            browser::first_divergence(a, dump(kStart + kStep1Box + "1,1,rectangle,300.1,60,0.01,6,0,0.5\n"));
         REQUIRE(found.has_value());
         CHECK(found->kind == DivergenceKind::shape);
         CHECK(found->index == 1);
@@ -104,7 +107,8 @@ TEST_CASE("a body only one dump has, a shape that differs, a run that stops", "[
         CHECK_FALSE(found->a_is_longer);
     }
     SECTION("a different start is a different scene, whatever the stage") {
-        const auto found = browser::first_divergence(a, dump("0,0,rectangle,100,51,0,0,0,0\n0,1,circle,300,60,0,6,0,0.5\n"));
+        const auto found =
+            browser::first_divergence(a, dump("0,0,rectangle,100,51,0,0,0,0\n0,1,circle,300,60,0,6,0,0.5\n"));
         REQUIRE(found.has_value());
         CHECK(found->step == 0);
         CHECK_FALSE(browser::known_difference(*found, "4.4").has_value());
@@ -123,12 +127,15 @@ TEST_CASE("files that are not state dumps are refused with their line", "[first_
         return std::string("accepted");
     };
     CHECK_THAT(refused("x,y\n"), Catch::StartsWith("bad.csv:1: not a state dump"));
-    CHECK_THAT(refused(kHeader + "0,0,rectangle,1,2,3\n"), Catch::StartsWith("bad.csv:2: a row has 9 fields, this has 6"));
+    CHECK_THAT(refused(kHeader + "0,0,rectangle,1,2,3\n"),
+               Catch::StartsWith("bad.csv:2: a row has 9 fields, this has 6"));
     CHECK_THAT(refused(kHeader + "0,0,triangle,1,2,3,4,5,6\n"), Catch::Contains("rectangle or circle"));
     CHECK_THAT(refused(kHeader + "0,0,circle,1,2,x,4,5,6\n"), Catch::Contains("angle is not a number"));
     // Bodies numbered 0, 2: a row is missing; a step that goes back; a dump not starting at step 0.
-    CHECK_THAT(refused(kHeader + "0,0,circle,1,2,3,4,5,6\n0,2,circle,1,2,3,4,5,6\n"), Catch::StartsWith("bad.csv:3: rows must go"));
-    CHECK_THAT(refused(kHeader + "0,0,circle,1,2,3,4,5,6\n1,0,circle,1,2,3,4,5,6\n0,0,circle,1,2,3,4,5,6\n"), Catch::StartsWith("bad.csv:4:"));
+    CHECK_THAT(refused(kHeader + "0,0,circle,1,2,3,4,5,6\n0,2,circle,1,2,3,4,5,6\n"),
+               Catch::StartsWith("bad.csv:3: rows must go"));
+    CHECK_THAT(refused(kHeader + "0,0,circle,1,2,3,4,5,6\n1,0,circle,1,2,3,4,5,6\n0,0,circle,1,2,3,4,5,6\n"),
+               Catch::StartsWith("bad.csv:4:"));
     CHECK_THAT(refused(kHeader + "1,0,circle,1,2,3,4,5,6\n"), Catch::StartsWith("bad.csv:2:"));
     CHECK(refused(kHeader + kStart) == "accepted");
 }
