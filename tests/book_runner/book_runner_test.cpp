@@ -185,6 +185,7 @@ TEST_CASE("the runner refuses what it cannot run with one line, and writes nothi
         const Run run = runBook(folder, arguments + " --dump " + test::quoted(dump));
         INFO(arguments << "\n" << run.error);
         CHECK(run.status == 2);
+        CHECK(test::isOneLine(run.error));
         CHECK_THAT(run.error, Catch::StartsWith("book_runner: ") && Catch::Contains(says));
         CHECK_FALSE(fs::exists(dump));
     };
@@ -198,9 +199,39 @@ TEST_CASE("the runner refuses what it cannot run with one line, and writes nothi
     refused("--scene " + test::quoted(grid) + " --frames 5", "world.broad_phase: the book's code has no such setting");
     refused("--keys 'f*0' --frames 5", "bad key script token \"f*0\"");
     refused("--frames 0", "--frames must be a whole number");
-    const Run no_book = runCommand(folder, test::quoted(BOOK_RUNNER) + " " + test::quoted(folder.path) +
+    // The scene the run reads, and the book's own folder, are never written.
+    const std::string typo_text = test::readText(typo);
+    const Run over_scene =
+        runBook(folder, "--scene " + test::quoted(typo) + " --frames 5 --dump " + test::quoted(typo));
+    CHECK(over_scene.status == 2);
+    CHECK_THAT(over_scene.error, Catch::Contains("that is the scene file the run reads"));
+    CHECK(test::readText(typo) == typo_text);
+    const fs::path inside = fs::path(STANDIN_PROJECT) / "public_html" / "dump.csv";
+    const Run into_book = runBook(folder, "--frames 5 --dump " + test::quoted(inside));
+    CHECK(into_book.status == 2);
+    CHECK_THAT(into_book.error, Catch::Contains("inside the book project"));
+    CHECK_FALSE(fs::exists(inside));
+    fs::create_directory(folder.path / "empty");
+    const Run no_book = runCommand(folder, test::quoted(BOOK_RUNNER) + " " + test::quoted(folder.path / "empty") +
                                                " --frames 5 --dump " + test::quoted(dump));
     CHECK(no_book.status == 2);
     CHECK_THAT(no_book.error, Catch::Contains("no index.html to load"));
     CHECK_FALSE(fs::exists(dump));
+}
+
+TEST_CASE("first_divergence refuses a file that is not a dump, in one line naming it", "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_not_a_dump");
+    const fs::path scene = writeFile(folder, "fall.json", kFallScene);
+    const Run run =
+        runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " " + test::quoted(scene) + " " + test::quoted(scene));
+    CHECK(run.status == 2);
+    CHECK(test::isOneLine(run.error));
+    CHECK_THAT(run.error, Catch::Contains("fall.json:1: not a state dump"));
+    const Run missing = runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " " +
+                                               test::quoted(folder.path / "none.csv") + " " + test::quoted(scene));
+    CHECK(missing.status == 2);
+    CHECK(test::isOneLine(missing.error));
+    const Run stage = runCommand(folder, test::quoted(FIRST_DIVERGENCE) + " a.csv b.csv --stage 44");
+    CHECK(stage.status == 2);
+    CHECK(test::isOneLine(stage.error));
 }
