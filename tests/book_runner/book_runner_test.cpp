@@ -235,3 +235,21 @@ TEST_CASE("first_divergence refuses a file that is not a dump, in one line namin
     CHECK(stage.status == 2);
     CHECK(test::isOneLine(stage.error));
 }
+
+TEST_CASE("tools/book_runner_compare runs both and gives first_divergence's verdict", "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_compare");
+    const fs::path scene = writeFile(folder, "fall.json", kFallScene);
+    const std::string command = test::quoted(BOOK_RUNNER_COMPARE) + " " + test::quoted(STANDIN_PROJECT);
+    const std::string where = " --build " + test::quoted(BUILD_DIR) + " --out " + test::quoted(folder.path / "compare");
+    const Run run = runCommand(folder, command + " 4.1 --scene " + test::quoted(scene) + " --frames 60" + where);
+    INFO(run.out << run.error);
+    CHECK(run.status == 1);
+    CHECK_THAT(run.out, Catch::Contains("step 1, body 1 (circle): cy is 60.008333333333333 in "));
+    CHECK(fs::exists(folder.path / "compare" / "ours.csv"));
+    CHECK(fs::exists(folder.path / "compare" / "book.csv"));
+
+    const Run bad = runCommand(folder, command + " 44" + where);
+    CHECK(bad.status == 2);
+    CHECK(test::isOneLine(bad.error));
+    CHECK_THAT(bad.error, Catch::Contains("a book project is X.Y"));
+}

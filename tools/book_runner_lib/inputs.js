@@ -1,8 +1,9 @@
 'use strict';
 // What the runner reads besides the book's code: one of our scene files
-// (docs/scene_format.md) and one of our key scripts (common/keys.h). Both are read with
-// our programs' rules, so that a file the runner takes is one our stages take too; a
-// bad one is refused with one line naming the file or token and the problem.
+// (docs/scene_format.md) and one of our key scripts (common/keys.h), in the grammar our
+// programs read. A malformed one is refused with one line naming the file or token and
+// the problem. The ranges of the numbers are left to the book's code, which has none:
+// run the scene through our stage first, which checks them.
 
 const fs = require('fs');
 
@@ -168,6 +169,10 @@ function parseScene(file) {
             angularVelocity: optional('angular_velocity', 0, number),
         };
         if (made.mass < 0) refuse(where('mass'), 'must be >= 0');
+        const foreign = body.shape === 'circle' ? ['width', 'height'] : ['radius'];
+        for (const key of foreign) {
+            if (key in body) refuse(where(key), `a ${body.shape} has no ${key}`);
+        }
         if (body.shape === 'circle') {
             made.radius = positive('radius');
         } else {
