@@ -178,6 +178,17 @@ TEST_CASE("a page that throws in every frame stops updating, as a browser's does
     CHECK_THAT(compare.out, Catch::Contains("the-selection-survives-the-removal-of-the-selected-shape-fixed-51"));
 }
 
+TEST_CASE("book code that never returns stops the run with one line, nothing written", "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_endless");
+    const fs::path dump = folder.path / "book.csv";
+    // The stand-in's Z loops for ever.
+    const Run run = runBook(folder, "--keys z@2 --frames 5 --script-timeout 0.5 --dump " + test::quoted(dump));
+    CHECK(run.status == 3);
+    CHECK(test::isOneLine(run.error));
+    CHECK_THAT(run.error, Catch::Contains("ran for over 0.5 s in frame 2, key code 90 without returning"));
+    CHECK_FALSE(fs::exists(dump));
+}
+
 TEST_CASE("the runner refuses what it cannot run with one line, and writes nothing", "[book_runner_test]") {
     test::ScratchFolder folder("book_runner_refuse");
     const fs::path dump = folder.path / "book.csv";

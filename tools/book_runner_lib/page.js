@@ -16,6 +16,7 @@ const vm = require('vm');
 
 class PageError extends Error {}
 
+
 // Any property read gives a function that does nothing, unless a script stored a value
 // there first (strokeStyle, lineWidth, font...): every drawing call of any project works.
 function drawingContext() {
@@ -59,9 +60,12 @@ function readIndex(folder) {
 
 class Page {
     // `folder` holds the project's index.html; `frameMs` is the length of one frame;
-    // `random` stands in for Math.random().
-    constructor(folder, frameMs, random) {
+    // `random` stands in for Math.random(). A browser would hang on a script that never
+    // returns; the page stops the run when one call of its code runs longer than
+    // `longestCallMs` (a frame of 2,500 shapes takes a few seconds).
+    constructor(folder, frameMs, random, longestCallMs) {
         this.frameMs = frameMs;
+        this.longestCallMs = longestCallMs;
         this.frames = 0;
         this.callbacks = [];
         this.errors = [];
@@ -94,7 +98,8 @@ class Page {
             } catch (error) {
                 throw new PageError(`${page.index}: cannot read its script ${src} (${error.code || error.message})`);
             }
-            this.run(() => vm.runInContext(code, this.global, { filename: file }), `loading ${src}`);
+            this.run(() => vm.runInContext(code, this.global, { filename: file, timeout: this.longestCallMs }),
+                `loading ${src}`);
         }
         this.onload = this.handler(page.onload, 'onload');
         this.onkeydown = this.handler(page.onkeydown, 'onkeydown');
@@ -131,18 +136,35 @@ class Page {
         }
     }
 
+    // Calls one of the page's functions from inside the page, so that the time limit
+    // holds for everything it calls in turn.
+    callInPage(action) {
+        this.global.bookRunnerCall = action;
+        try {
+            return vm.runInContext('bookRunnerCall()', this.global, { timeout: this.longestCallMs });
+        } finally {
+            delete this.global.bookRunnerCall;
+        }
+    }
+
     // A throw in a handler or a frame does not stop a browser: it reports it and goes
-    // on with the next event. So does the page here, keeping each message.
+    // on with the next event. So does the page here, keeping each message. A call that
+    // never returns stops the run.
     dispatch(action, when) {
         try {
-            action();
+            this.callInPage(action);
         } catch (error) {
+            if (error && error.code === 'ERR_SCRIPT_EXECUTION_TIMEOUT') {
+                throw new PageError(`the book's code ran for over ${this.longestCallMs / 1000} s in ${when} ` +
+                    'without returning (a loop that never ends?)');
+            }
             this.errors.push(`${when}: ${firstLine(error)}`);
         }
     }
 
     load() {
-        this.run(() => this.onload.call(this.global, { type: 'load' }), 'running the body\'s onload');
+        this.run(() => this.callInPage(() => this.onload.call(this.global, { type: 'load' })),
+            'running the body\'s onload');
     }
 
     // A keydown as old and new browsers give it: window.event during the handler, and

@@ -1,7 +1,8 @@
 "use strict";
 // A few of the book's keys: digits select, K pushes down, comma starts and stops the
-// motion, F makes a rectangle of random size at the selected shape and throws it, and
-// X removes every shape after the first one (so the echo of a shape past the end throws).
+// motion, F makes a rectangle of random size at the selected shape and throws it, X
+// removes every shape after the first one (so the echo of a shape past the end throws),
+// and Z never returns (so the runner's time limit has something to stop).
 var gObjectNum = 0;
 function userControl(event) {
     var code = window.event ? event.keyCode : event.which;
@@ -22,5 +23,8 @@ function userControl(event) {
     }
     if (code === 88) {
         shapes.splice(1, shapes.length);
+    }
+    while (code === 90) {
+        gObjectNum = 0;
     }
 }
