@@ -222,6 +222,11 @@ TEST_CASE("the runner refuses what it cannot run with one line, and writes nothi
     CHECK(into_book.status == 2);
     CHECK_THAT(into_book.error, Catch::Contains("inside the book project"));
     CHECK_FALSE(fs::exists(inside));
+    // A folder that is not there: the system's refusal, status 1, as for our programs.
+    const Run no_folder = runBook(folder, "--frames 5 --dump " + test::quoted(folder.path / "missing" / "book.csv"));
+    CHECK(no_folder.status == 1);
+    CHECK(test::isOneLine(no_folder.error));
+    CHECK_THAT(no_folder.error, Catch::Contains("cannot write"));
     fs::create_directory(folder.path / "empty");
     const Run no_book = runCommand(folder, test::quoted(BOOK_RUNNER) + " " + test::quoted(folder.path / "empty") +
                                                " --frames 5 --dump " + test::quoted(dump));
