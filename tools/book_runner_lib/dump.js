@@ -34,11 +34,15 @@ function formatNumber(value) {
     return (negative ? '-' : '') + trim(fixed);
 }
 
+// A shape a dump has no name for.
+class DumpShapeError extends Error {}
+
 // The shape's name in a dump, from the book's mType ("Rectangle", "Circle").
 function shapeName(shape) {
-    const type = String(shape.mType).toLowerCase();
+    const type = String(shape && shape.mType).toLowerCase();
     if (type !== 'rectangle' && type !== 'circle') {
-        throw new Error(`a shape of type ${JSON.stringify(shape.mType)}, which a dump cannot name`);
+        throw new DumpShapeError(`the book's object list holds a shape of type ${JSON.stringify(shape && shape.mType)}, ` +
+            'which a dump cannot name (rectangle or circle)');
     }
     return type;
 }
@@ -75,4 +79,4 @@ class StateDump {
     }
 }
 
-module.exports = { StateDump, formatNumber };
+module.exports = { StateDump, DumpShapeError, formatNumber };

@@ -15,6 +15,8 @@ const path = require('path');
 const vm = require('vm');
 
 class PageError extends Error {}
+// The folder given is no book project the runner can load: a refused argument.
+class ProjectError extends PageError {}
 
 
 // Any property read gives a function that does nothing, unless a script stored a value
@@ -45,7 +47,7 @@ function readIndex(folder) {
     try {
         html = fs.readFileSync(index, 'utf8');
     } catch (error) {
-        throw new PageError(`${folder}: no index.html to load (${error.code || error.message}); ` +
+        throw new ProjectError(`${folder}: no index.html to load (${error.code || error.message}); ` +
             'give the folder of one book project, the one that holds its index.html');
     }
     const scripts = [...html.matchAll(/<script\b[^>]*\bsrc\s*=\s*"([^"]+)"/gi)].map((m) => m[1]);
@@ -54,7 +56,7 @@ function readIndex(folder) {
         const found = body && new RegExp(`\\b${name}\\s*=\\s*"([^"]*)"`, 'i').exec(body[1]);
         return found ? found[1] : '';
     };
-    if (scripts.length === 0) throw new PageError(`${index}: loads no <script src="...">`);
+    if (scripts.length === 0) throw new ProjectError(`${index}: loads no <script src="...">`);
     return { index, scripts, onload: handler('onload'), onkeydown: handler('onkeydown') };
 }
 
@@ -96,7 +98,7 @@ class Page {
             try {
                 code = fs.readFileSync(file, 'utf8');
             } catch (error) {
-                throw new PageError(`${page.index}: cannot read its script ${src} (${error.code || error.message})`);
+                throw new ProjectError(`${page.index}: cannot read its script ${src} (${error.code || error.message})`);
             }
             this.run(() => vm.runInContext(code, this.global, { filename: file, timeout: this.longestCallMs }),
                 `loading ${src}`);
@@ -196,4 +198,4 @@ function firstLine(error) {
     return where ? `${lines[0]} (${where.trim().replace(/^at /, '')})` : lines[0];
 }
 
-module.exports = { Page, PageError };
+module.exports = { Page, PageError, ProjectError };
