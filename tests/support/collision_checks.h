@@ -1,5 +1,6 @@
 #pragma once
-// Checks for the collision tests: collision info against numbers worked out by hand,
+// Checks for the collision tests: collision info against numbers worked out by hand
+// (each quantity named with its case, at the test's line: checked_at.h),
 // and one pair of shapes through the engine's collision pass step
 // (engine::findCollision), judged against the oracle of collision_oracle.h.
 //
@@ -13,28 +14,80 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <source_location>
+#include <string>
 
+#include "checked_at.h"
+#include "collision_info.h"
 #include "collision_oracle.h"
 #include "near.h"
+#include "number_format.h"
 #include "physics.h"
 #include "random_scene.h"
+
+namespace Catch {
+// "depth 1, normal (-0.6, -0.8), from (-9.4, -4.2) to (-10, -5)".
+template <>
+struct StringMaker<engine::CollisionInfo> {
+    static std::string convert(const engine::CollisionInfo& info) {
+        std::string text = "depth ";
+        text += browser::to_js_string(info.depth());
+        text += ", normal ";
+        text += Detail::stringify(info.normal());
+        text += ", from ";
+        text += Detail::stringify(info.start());
+        text += " to ";
+        text += Detail::stringify(info.end());
+        return text;
+    }
+};
+}  // namespace Catch
 
 namespace test {
 
 // Hand-worked numbers hold to rounding: the shapes in those cases are tens of pixels.
 inline constexpr double kHandWorked = 1e-12;
 
-inline void requireNear(engine::Vec2 actual, engine::Vec2 expected) {
-    CHECK_THAT(actual, test::near(expected, kHandWorked));
-}
+// What a hand-worked case expects: the collision info's four quantities.
+struct ExpectedCollision {
+    double depth;
+    engine::Vec2 normal;
+    engine::Vec2 start;
+    engine::Vec2 end;
+};
 
-inline void requireInfo(const std::optional<engine::CollisionInfo>& info, double depth, engine::Vec2 normal,
-                        engine::Vec2 start, engine::Vec2 end) {
-    REQUIRE(info.has_value());
-    CHECK_THAT(info->depth(), test::near(depth, kHandWorked));
-    requireNear(info->normal(), normal);
-    requireNear(info->start(), start);
-    requireNear(info->end(), end);
+namespace detail {
+inline bool within(double actual, double expected) { return std::abs(actual - expected) <= kHandWorked; }
+inline bool within(engine::Vec2 actual, engine::Vec2 expected) {
+    return within(actual.x, expected.x) && within(actual.y, expected.y);
+}
+// "normal of R1 (radius 6): expected (-0.6, -0.8), got (0.6, 0.8)"
+template <typename Value>
+void checkQuantity(const std::source_location& where, const char* quantity, const std::string& case_name, Value actual,
+                   Value expected) {
+    std::string text = quantity;
+    text += " of ";
+    text += case_name;
+    text += ": expected ";
+    text += Catch::Detail::stringify(expected);
+    text += ", got ";
+    text += Catch::Detail::stringify(actual);
+    checkedAt(where, quantity, within(actual, expected), text);
+}
+}  // namespace detail
+
+// The collision found in the hand-worked case `case_name` has the expected depth,
+// normal, start and end (each within kHandWorked). Each quantity is a check of its own,
+// named with the case, and reported at the test's line.
+inline void requireInfo(const std::string& case_name, const std::optional<engine::CollisionInfo>& found,
+                        const ExpectedCollision& expected,
+                        std::source_location where = std::source_location::current()) {
+    checkedAt(where, "collision", found.has_value(), case_name + std::string(": expected a collision, found none"),
+              true);
+    detail::checkQuantity(where, "depth", case_name, found->depth(), expected.depth);
+    detail::checkQuantity(where, "normal", case_name, found->normal(), expected.normal);
+    detail::checkQuantity(where, "start", case_name, found->start(), expected.start);
+    detail::checkQuantity(where, "end", case_name, found->end(), expected.end);
 }
 
 // Depths agree to this fraction of the depth, and to this many pixels below 1 px deep:
