@@ -172,11 +172,11 @@ private:
             check_may_write(file, WriteTarget::file, files_read(options_));
             write_png(file, page_);
             std::cout << "F12: saved frame " << frame << " to " << file.string() << '\n';
-            notice_ = std::string("saved ") + name;
+            notice_ = std::string("F12: saved ") + name;
         } catch (const FileError& error) {
             std::cerr << "F12: cannot save frame " << frame << " to " << in_quotes(file.string()) << ": "
                       << printable(error.what()) << '\n';
-            notice_ = std::string("cannot save ") + name + " (see the terminal)";
+            notice_ = std::string("F12: cannot save ") + name + " (see the terminal)";
             screenshot_failed_ = true;
         }
         notice_refreshes_ = kNoticeRefreshes;
@@ -188,9 +188,9 @@ private:
         ++presses_;
     }
 
-    // "frame 41 (0.68 s)   Space: pause   F12: save page   Esc: end", or while paused
-    // "paused after frame 41 (0.68 s)   waiting: f g   period: one frame   Space: go on
-    // F12: save page   Esc: end", with "saved s4_4_frame_0041.png" for a while after F12.
+    // "frame 41 (0.68 s)   F12: save page   Space: pause   Esc: end", or while paused
+    // "paused after frame 41 (0.68 s)   waiting: f g   F12: save page   period: one frame
+    // Space: go on   Esc: end", with "F12: saved s4_4_frame_0041.png" for a while after F12.
     std::string status() const {
         const int shown = frames_run_ - 1;
         const double seconds = frames_run_ * options_.frame_ms / 1000.0;
@@ -201,9 +201,9 @@ private:
             for (const Key key : waiting_) text += ' ' + key_name(key);
         }
         if (!options_.live.record.empty()) text += "   recording";
-        if (!notice_.empty()) text += "   " + notice_;
-        text += paused_ ? "   period: one frame   Space: go on" : "   Space: pause";
-        text += "   F12: save page   Esc: end";
+        // What F12 did takes the place of its hint for a while: the line has room for one.
+        text += "   " + (notice_.empty() ? std::string("F12: save page") : notice_);
+        text += paused_ ? "   period: one frame   Space: go on   Esc: end" : "   Space: pause   Esc: end";
         return text;
     }
 
