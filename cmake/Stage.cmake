@@ -14,7 +14,7 @@
 #   <id>.overlay_pictures  when expected/overlay/ exists: the same run with --overlay,
 #                      compared with expected/overlay/ (labels also pictures and overlay)
 #   <id>.names, <id>.names_mutated  when names.md exists: the name map's check (label names)
-#   <id>.readme_keys   the README's Keys table against --help's key list (label names)
+#   <id>.readme_keys   with them: the README's Keys table against --help's key list
 #
 # Each call is also remembered (global properties PHYSICS_STAGES and
 # PHYSICS_STAGE_<id>_<FOLDER|PROGRAM|CHAPTER|FEATURES>), so that cmake/Workbench.cmake
@@ -72,13 +72,12 @@ function(add_stage id)
     set(check_names ${PROJECT_SOURCE_DIR}/tests/names/check_name_map.sh)
     add_test(NAME ${id}.names COMMAND bash ${check_names} ${dir})
     add_test(NAME ${id}.names_mutated COMMAND bash ${check_names} --mutated ${dir})
-    set_tests_properties(${id}.names ${id}.names_mutated PROPERTIES LABELS "${labels};names")
+    # The README's Keys table, which links names.md, is the key list of --help
+    # (stage_keys_test checks that list against what the keys do).
+    add_test(NAME ${id}.readme_keys
+      COMMAND bash ${PROJECT_SOURCE_DIR}/tests/names/check_readme_keys.sh $<TARGET_FILE:${program}> ${dir}/README.md)
+    set_tests_properties(${id}.names ${id}.names_mutated ${id}.readme_keys PROPERTIES LABELS "${labels};names")
   endif()
-  # The README's Keys table is the key list of --help (stage_keys_test checks that list
-  # against what the keys do).
-  add_test(NAME ${id}.readme_keys
-    COMMAND bash ${PROJECT_SOURCE_DIR}/tests/names/check_readme_keys.sh $<TARGET_FILE:${program}> ${dir}/README.md)
-  set_tests_properties(${id}.readme_keys PROPERTIES LABELS "${labels};names")
 
   if(EXISTS ${dir}/expected/overlay)
     add_test(NAME ${id}.overlay_pictures
