@@ -13,6 +13,9 @@
 #   <id>.pictures      runs the default program and compares its pictures with expected/
 #   <id>.overlay_pictures  when expected/overlay/ exists: the same run with --overlay,
 #                      compared with expected/overlay/ (labels also pictures and overlay)
+#   <id>.names         when names.md exists: the name map's check (label names; that the
+#                      check can fail is tested once, names.checker_sees_renames)
+#   <id>.readme_keys   with them: the README's Keys table against --help's key list
 #
 # Each call is also remembered (global properties PHYSICS_STAGES and
 # PHYSICS_STAGE_<id>_<FOLDER|PROGRAM|CHAPTER|FEATURES>), so that cmake/Workbench.cmake
@@ -63,6 +66,18 @@ function(add_stage id)
       -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
       -P ${PROJECT_SOURCE_DIR}/cmake/RunAndCompare.cmake)
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels};pictures")
+
+  # names.md, the book's names against ours: each C++ name it gives is where it says
+  # (tests/names/).
+  if(EXISTS ${dir}/names.md)
+    set(check_names ${PROJECT_SOURCE_DIR}/tests/names/check_name_map.sh)
+    add_test(NAME ${id}.names COMMAND bash ${check_names} ${dir})
+    # The README's Keys table, which links names.md, is the key list of --help
+    # (stage_keys_test checks that list against what the keys do).
+    add_test(NAME ${id}.readme_keys
+      COMMAND bash ${PROJECT_SOURCE_DIR}/tests/names/check_readme_keys.sh $<TARGET_FILE:${program}> ${dir}/README.md)
+    set_tests_properties(${id}.names ${id}.readme_keys PROPERTIES LABELS "${labels};names")
+  endif()
 
   if(EXISTS ${dir}/expected/overlay)
     add_test(NAME ${id}.overlay_pictures
