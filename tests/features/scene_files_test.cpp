@@ -113,6 +113,11 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
               "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
               "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
               "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop"}},
+    {"s5_5", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
+              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
+              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
+              "sleep_speed", "time_to_sleep"}},
 };
 
 std::string commaList(const std::vector<std::string>& words) {

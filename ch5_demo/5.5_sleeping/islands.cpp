@@ -1,0 +1,108 @@
+#include "islands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace engine {
+
+namespace {
+// How fast a shape still moves, all told (islands.h): straight, turning at its farthest
+// point, and the overlap past the slop it would still have to be moved out of in a step.
+double sleepSpeed(const RigidShape& shape, double deepest, const WorldSettings& world) {
+    const double correction = std::max(0.0, deepest - world.slop) / world.dt;
+    return shape.velocity().length() + std::abs(shape.angularVelocity()) * shape.boundRadius() + correction;
+}
+}  // namespace
+
+void Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
+    touches_.push_back({i, j, depth});
+    // An awake shape has reached a sleeping one: the sleeper's island must take part in
+    // this very step, or the awake shape would sink into it as into a static wall.
+    if (shapes[i]->sleep().asleep) wakeIslandOf(shapes, i);
+    if (shapes[j]->sleep().asleep) wakeIslandOf(shapes, j);
+}
+
+std::size_t Islands::root(std::size_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];  // halving the path as it goes
+    return i;
+}
+
+void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
+    if (!world.sleep) return;
+    const std::size_t count = shapes.size();
+    parent_.resize(count);
+    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+    deepest_.assign(count, 0.0);
+    held_.assign(count, 0);
+    for (const Touch& touch : touches_) {
+        deepest_[touch.a] = std::max(deepest_[touch.a], touch.depth);
+        deepest_[touch.b] = std::max(deepest_[touch.b], touch.depth);
+        held_[touch.a] = held_[touch.b] = 1;
+        // Never through a static shape: it holds what lies on it, but carries no motion
+        // from one of them to another.
+        if (shapes[touch.a]->isStatic() || shapes[touch.b]->isStatic()) continue;
+        parent_[root(touch.a)] = root(touch.b);
+    }
+    // Without gravity nothing falls, and a shape floating still is at rest.
+    const bool falling_without_support = world.gravity != Vec2{};
+    island_rested_.assign(count, std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < count; ++i) {
+        RigidShape& shape = *shapes[i];
+        if (shape.isResting()) continue;
+        const bool resting = world.movement && (held_[i] || !falling_without_support) &&
+                             sleepSpeed(shape, deepest_[i], world) < world.sleep_speed;
+        shape.rest(resting, world.dt);
+        double& rested = island_rested_[root(i)];
+        rested = std::min(rested, shape.sleep().rested_s);
+    }
+    island_label_.assign(count, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        RigidShape& shape = *shapes[i];
+        if (shape.isResting()) continue;
+        const std::size_t island = root(i);
+        if (island_label_[island] == 0) island_label_[island] = next_label_++;
+        shape.joinIsland(island_label_[island]);
+        if (island_rested_[island] >= world.time_to_sleep) shape.fallAsleep(island_label_[island]);
+    }
+}
+
+void Islands::wakeLabel(ShapeList shapes, std::uint64_t island) {
+    for (const auto& shape : shapes) {
+        if (shape->sleep().island == island && !shape->isStatic()) shape->wake();
+    }
+}
+
+void Islands::wakeIslandOf(ShapeList shapes, std::size_t index) {
+    if (index >= shapes.size()) return;
+    RigidShape& shape = *shapes[index];
+    if (shape.isStatic()) return wakeAll(shapes);
+    wakeLabel(shapes, shape.sleep().island);
+    shape.wake();
+}
+
+void Islands::wakeAll(ShapeList shapes) {
+    for (const auto& shape : shapes) shape->wake();
+}
+
+// A static shape leaving wakes everything (wakeIslandOf). A moving one wakes its own
+// island and the islands it touched in the step (a platform it touched stays asleep:
+// it wakes nothing).
+void Islands::removing(ShapeList shapes, std::size_t index) {
+    wakeIslandOf(shapes, index);
+    const auto wakeUnlessStatic = [&](std::size_t other) {
+        if (!shapes[other]->isStatic()) wakeIslandOf(shapes, other);
+    };
+    for (const Touch& touch : touches_) {
+        if (touch.a == index) wakeUnlessStatic(touch.b);
+        if (touch.b == index) wakeUnlessStatic(touch.a);
+    }
+}
+
+std::size_t Islands::awakeCount(ShapeList shapes) {
+    return static_cast<std::size_t>(
+        std::count_if(shapes.begin(), shapes.end(), [](const auto& shape) { return !shape->isResting(); }));
+}
+
+}  // namespace engine
