@@ -51,9 +51,12 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
     for (std::size_t i = 0; i < count; ++i) {
         RigidShape& shape = *shapes[i];
         if (shape.isResting()) continue;
-        const bool resting = world.movement && (held_[i] || !falling_without_support) &&
+        // The book's passes leave a resting box rocking on its corners, off the floor
+        // every other step: a contact in this step or the last one holds it.
+        const bool held = held_[i] || shape.sleep().held;
+        const bool resting = world.movement && (held || !falling_without_support) &&
                              sleepSpeed(shape, deepest_[i], world) < world.sleep_speed;
-        shape.rest(resting, world.dt);
+        shape.rest(resting, held_[i], world.dt);
         double& rested = island_rested_[root(i)];
         rested = std::min(rested, shape.sleep().rested_s);
     }

@@ -17,8 +17,9 @@
 // its farthest point moves), and the correction it still needs (d, the deepest overlap
 // its contacts were found with this step; what lies past the slop has to be moved out
 // within a step, at that speed). A shape rests while s stays under the world's
-// sleep_speed, it is held by a contact (under gravity, a shape that touches nothing is
-// falling, however slowly it moves at the top of its arc), and the world moves at all.
+// sleep_speed, it is held by a contact in this step or the last (under gravity, a shape
+// that touches nothing is falling, however slowly it moves at the top of its arc), and
+// the world moves at all.
 // An island falls asleep when every shape in it has rested for time_to_sleep; its
 // velocities are then set to 0, so that it wakes from rest.
 //

@@ -98,7 +98,8 @@ void RigidShape::updateInertia() {
 // Falling asleep stops the shape dead: the little speed it rested with would otherwise
 // carry it on when it wakes, after any time asleep.
 void RigidShape::fallAsleep(std::uint64_t island) {
-    sleep_ = {.asleep = true, .rested_s = sleep_.rested_s, .island = island};
+    sleep_.asleep = true;
+    sleep_.island = island;
     velocity_ = Vec2{};
     angular_velocity_ = 0.0;
 }

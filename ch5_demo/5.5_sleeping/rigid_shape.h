@@ -44,6 +44,7 @@ enum class ShapeType { Rectangle, Circle };
 struct SleepState {
     bool asleep = false;
     double rested_s = 0.0;
+    bool held = false;  // it touched something in the last step
     std::uint64_t island = 0;
 };
 
@@ -111,8 +112,12 @@ public:
         sleep_.asleep = false;
         sleep_.rested_s = 0.0;
     }
-    // Adds dt to the rest timer while `resting`, and starts it again from 0 when not.
-    void rest(bool resting, double dt) { sleep_.rested_s = resting ? sleep_.rested_s + dt : 0.0; }
+    // Adds dt to the rest timer while `resting`, and starts it again from 0 when not;
+    // `held`: the shape touched something in this step.
+    void rest(bool resting, bool held, double dt) {
+        sleep_.rested_s = resting ? sleep_.rested_s + dt : 0.0;
+        sleep_.held = held;
+    }
     void joinIsland(std::uint64_t island) { sleep_.island = island; }
 
     double friction() const { return friction_; }

@@ -58,10 +58,10 @@ inline constexpr double kPositionRate = 0.2;           // share of the overlap p
 inline constexpr double kSlop = 0.15;                  // px of overlap left alone
 
 // Sleeping (islands.h; README.md derives both numbers): a shape rests while its sleep
-// speed stays under 2 px/s, and its island falls asleep when all of it has rested for
+// speed stays under 3 px/s, and its island falls asleep when all of it has rested for
 // half a second. Under the demo's gravity a shape at the top of its arc is that slow
-// for 2 * 2 / 20 = 0.2 s only.
-inline constexpr double kSleepSpeed = 2.0;  // px/s
+// for 2 * 3 / 20 = 0.3 s only.
+inline constexpr double kSleepSpeed = 3.0;  // px/s
 inline constexpr double kTimeToSleep = 0.5;  // s
 
 struct WorldSettings {

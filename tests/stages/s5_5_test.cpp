@@ -153,11 +153,12 @@ TEST_CASE("s5_5: a box at rest on the floor sleeps after time_to_sleep, and then
         Sleepy world(solver);
         world.floor();
         world.box(400);
-        // It lands at rest at once (its bottom is on the floor's face): half a second of
-        // 1/60 s steps, 30 of them, give or take the rounding of 30 additions of 1/60.
+        // It lands at rest at once (its bottom is on the floor's face, and it touches it
+        // from the second step): half a second of 1/60 s steps is 30 of them, give or
+        // take a step for the rounding of 30 additions of 1/60.
         world.page.steps(29);
         CHECK_FALSE(world.asleep(1));
-        world.page.steps(2);
+        world.page.steps(3);
         REQUIRE(world.asleep(1));
         const engine::Rectangle asleep = static_cast<const engine::Rectangle&>(world.page.core.object(1));
         CHECK(asleep.velocity() == Vec2{});
@@ -248,7 +249,7 @@ TEST_CASE("s5_5: wake rule: removing the floor under a sleeping pile wakes it al
     off_world.sleep = false;
     Sleepy off(off_world);
     copyShapes(on.page.core, off.page.core);
-    for (int step = 0; step < 2 * kStepsPerSecond; ++step) {
+    for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
         on.page.steps(1);
         off.page.steps(1);
         INFO("step " << step);
@@ -429,7 +430,13 @@ TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sl
                                     static_cast<std::size_t>(x));
         return browser::Color{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
     };
-    CHECK(pixel(130, 400) == browser::colors::kGray);
+    int gray = 0, blue = 0;
+    for (int x = 126; x <= 134; ++x) {
+        gray += pixel(x, 400) == browser::colors::kGray;
+        blue += pixel(x, 400) == browser::colors::kBlue;
+    }
+    CHECK(gray > 0);
+    CHECK(blue == 0);
     world.page.press(browser::Key::H);
     world.page.core.runGameLoop();
     CHECK(world.page.window.document.ui_echo.find("  Sleeping: true, awake 4/4\n") != std::string::npos);
