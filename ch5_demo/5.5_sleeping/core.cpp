@@ -86,11 +86,8 @@ void Core::toggleSleep() {
 
 // The shapes removed wake whatever they held up (islands.h).
 void Core::keepFirstObjects(std::size_t count) {
-    for (std::size_t i = count; i < all_objects_.size(); ++i) physics_.islands().removing(all_objects_, i);
-    if (count < all_objects_.size()) {
-        all_objects_.resize(count);
-        physics_.islands().forgetTouches();
-    }
+    for (std::size_t i = count; i < all_objects_.size(); ++i) wakeIslandOf(i);
+    if (count < all_objects_.size()) all_objects_.resize(count);
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
@@ -136,15 +133,14 @@ bool Core::isOutOfBounds(const RigidShape& shape) const {
 // no one (docs/errata.md). The selection is an index, as the book's gObjectNum is; one
 // past the end of the list goes back to object 0. The shapes after a removed one move
 // up the list, so the physics' record of what the step did to each pair, kept by their
-// places in the list, would name other shapes: it is dropped, and so are the islands'
-// touches, once each shape leaving has woken what it held up.
+// places in the list, would name other shapes: it is dropped. Each shape leaving first
+// wakes its island: what it held up, or lay on (islands.h).
 void Core::removeOutOfBounds() {
     for (std::size_t i = 0; i < all_objects_.size(); ++i) {
-        if (isOutOfBounds(*all_objects_[i])) physics_.islands().removing(all_objects_, i);
+        if (isOutOfBounds(*all_objects_[i])) wakeIslandOf(i);
     }
     if (std::erase_if(all_objects_, [this](const auto& shape) { return isOutOfBounds(*shape); }) > 0) {
         physics_.forgetResponses();
-        physics_.islands().forgetTouches();
     }
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }

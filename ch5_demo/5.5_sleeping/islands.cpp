@@ -14,6 +14,15 @@ double sleepSpeed(const RigidShape& shape, double deepest, const WorldSettings& 
     const double correction = std::max(0.0, deepest - world.slop) / world.dt;
     return shape.velocity().length() + std::abs(shape.angularVelocity()) * shape.boundRadius() + correction;
 }
+
+// How far the shape has gone since its rest began: its centre, and its farthest point
+// turning about it. A shape that starts to slide or tip from rest is slow for a long
+// while, but it goes on in one direction, where a resting one only trembles in place.
+double driftSinceRest(const RigidShape& shape) {
+    const SleepState& state = shape.sleep();
+    if (state.rested_s == 0.0) return 0.0;
+    return shape.center().distance(state.rest_center) + std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
+}
 }  // namespace
 
 void Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
@@ -55,7 +64,8 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
         // every other step: a contact in this step or the last one holds it.
         const bool held = held_[i] || shape.sleep().held;
         const bool resting = world.movement && (held || !falling_without_support) &&
-                             sleepSpeed(shape, deepest_[i], world) < world.sleep_speed;
+                             sleepSpeed(shape, deepest_[i], world) < world.sleep_speed &&
+                             driftSinceRest(shape) <= world.slop;
         shape.rest(resting, held_[i], world.dt);
         double& rested = island_rested_[root(i)];
         rested = std::min(rested, shape.sleep().rested_s);
@@ -87,20 +97,6 @@ void Islands::wakeIslandOf(ShapeList shapes, std::size_t index) {
 
 void Islands::wakeAll(ShapeList shapes) {
     for (const auto& shape : shapes) shape->wake();
-}
-
-// A static shape leaving wakes everything (wakeIslandOf). A moving one wakes its own
-// island and the islands it touched in the step (a platform it touched stays asleep:
-// it wakes nothing).
-void Islands::removing(ShapeList shapes, std::size_t index) {
-    wakeIslandOf(shapes, index);
-    const auto wakeUnlessStatic = [&](std::size_t other) {
-        if (!shapes[other]->isStatic()) wakeIslandOf(shapes, other);
-    };
-    for (const Touch& touch : touches_) {
-        if (touch.a == index) wakeUnlessStatic(touch.b);
-        if (touch.b == index) wakeUnlessStatic(touch.a);
-    }
 }
 
 std::size_t Islands::awakeCount(ShapeList shapes) {

@@ -18,13 +18,15 @@
 // its contacts were found with this step; what lies past the slop has to be moved out
 // within a step, at that speed). A shape rests while s stays under the world's
 // sleep_speed, it is held by a contact in this step or the last (under gravity, a shape
-// that touches nothing is falling, however slowly it moves at the top of its arc), and
-// the world moves at all.
+// that touches nothing is falling, however slowly it moves at the top of its arc), it
+// has not drifted farther than the slop since its rest began (a box that starts to
+// slide or tip from rest is slow for a long while, but does not stay put), and the
+// world moves at all.
 // An island falls asleep when every shape in it has rested for time_to_sleep; its
 // velocities are then set to 0, so that it wakes from rest.
 //
 // The wake rules: an awake shape that touches a sleeping one wakes its island (physics);
-// a removed shape wakes its island and every island it touched; a key that changes a
+// a removed shape wakes its island, which holds every shape it touched; a key that changes a
 // shape wakes it and its island; anything done to a static shape, and any change of the
 // world's settings, wakes everything (core.h): which islands lean on a platform is
 // exactly what the step no longer looks at.
@@ -50,14 +52,10 @@ public:
     // rest timer, and the islands that have rested long enough fall asleep.
     void endStep(ShapeList shapes, const WorldSettings& world);
 
-    // The shape at `index` and its island; a static shape wakes everything.
+    // The shape at `index` and its island; a static shape wakes everything. Called for
+    // a shape about to be removed too: what it held up, or lay on, wakes.
     void wakeIslandOf(ShapeList shapes, std::size_t index);
     void wakeAll(ShapeList shapes);
-    // Before the shape at `index` leaves the list: whatever it held up wakes.
-    void removing(ShapeList shapes, std::size_t index);
-    // Once shapes have left the list, the step's touches name places that now hold
-    // other shapes.
-    void forgetTouches() { touches_.clear(); }
 
     // The shapes that can move and are awake.
     static std::size_t awakeCount(ShapeList shapes);

@@ -100,8 +100,8 @@ void RigidShape::updateInertia() {
 void RigidShape::fallAsleep(std::uint64_t island) {
     sleep_.asleep = true;
     sleep_.island = island;
-    velocity_ = Vec2{};
-    angular_velocity_ = 0.0;
+    setVelocity(Vec2{});
+    setAngularVelocity(0.0);
 }
 
 }  // namespace engine

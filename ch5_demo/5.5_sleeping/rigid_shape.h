@@ -45,6 +45,8 @@ struct SleepState {
     bool asleep = false;
     double rested_s = 0.0;
     bool held = false;  // it touched something in the last step
+    Vec2 rest_center;   // where it was, and how it was turned, when its rest began
+    double rest_angle = 0.0;
     std::uint64_t island = 0;
 };
 
@@ -115,6 +117,10 @@ public:
     // Adds dt to the rest timer while `resting`, and starts it again from 0 when not;
     // `held`: the shape touched something in this step.
     void rest(bool resting, bool held, double dt) {
+        if (resting && sleep_.rested_s == 0.0) {
+            sleep_.rest_center = center_;
+            sleep_.rest_angle = angle_;
+        }
         sleep_.rested_s = resting ? sleep_.rested_s + dt : 0.0;
         sleep_.held = held;
     }

@@ -170,6 +170,40 @@ TEST_CASE("s5_5: a box at rest on the floor sleeps after time_to_sleep, and then
     }
 }
 
+TEST_CASE("s5_5: the rest timer starts again from 0 when a shape moves") {
+    Sleepy world;
+    world.floor();
+    world.box(400);
+    world.page.steps(20);
+    CHECK(world.page.core.object(1).sleep().rested_s > 0.25);
+    world.page.core.object(1).setVelocity({0, -50});  // thrown up, by no key
+    world.page.steps(1);
+    CHECK(world.page.core.object(1).sleep().rested_s == 0.0);
+}
+
+TEST_CASE("s5_5: an island sleeps only when every shape in it has rested for time_to_sleep") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        // A box at rest on the floor, and a ball 1 px above it that lands on it after
+        // sqrt(2 * 1 / 20) = 0.32 s, some 19 steps in: the box has then rested for 0.3 s,
+        // the ball not at all.
+        Sleepy world(solver);
+        world.floor();
+        world.box(400);
+        world.page.core.add(engine::Circle({400, kFloorTop - 40 - 10 - 1}, 10));
+        int landed = -1, asleep = -1;
+        for (int step = 1; step <= 5 * kStepsPerSecond && asleep < 0; ++step) {
+            world.page.steps(1);
+            if (landed < 0 && world.page.core.object(2).sleep().held) landed = step;
+            if (world.asleep(1)) asleep = step;
+        }
+        REQUIRE(landed > 0);
+        REQUIRE(asleep > 0);
+        CHECK(world.asleep(2));  // the two fall asleep together
+        CHECK(asleep - landed >= 29);
+    }
+}
+
 TEST_CASE("s5_5: islands join shapes through touching contacts, never through a static shape") {
     for (engine::SolverKind solver : kBothSolvers) {
         INFO("solver " << static_cast<int>(solver));
@@ -410,6 +444,47 @@ TEST_CASE("s5_5: a box tipping slowly over an edge does not sleep mid-tip") {
             fell = world.page.core.object(1).center().y > 340;  // well below the platform
         }
         CHECK(fell);
+    }
+}
+
+TEST_CASE("s5_5: a box that starts to slide slowly down a slope from rest does not sleep") {
+    // A slope of 20 degrees, mu 0.3 (Coulomb): it slides at g (sin a - mu cos a) =
+    // 1.2 px/s^2, so it stays under the sleep speed for 2.5 s, five times the time to
+    // sleep; but it drifts past the slop within 0.5 s.
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        WorldSettings world = sleepyWorld(solver);
+        world.friction_model = engine::FrictionModel::coulomb;
+        Sleepy run(world);
+        const double slope = 20.0 * 3.14159265358979 / 180.0;
+        engine::Rectangle& ramp = run.page.core.add(engine::Rectangle({400, 300}, 700, 20, {.mass = 0, .friction = 0.3}));
+        ramp.rotate(slope);
+        // The box sits on the ramp's top face, turned with it.
+        const Vec2 normal{std::sin(slope), -std::cos(slope)};
+        engine::Rectangle& box = run.page.core.add(engine::Rectangle(Vec2{400, 300} + normal * 30.0, 40, 40, {.friction = 0.3}));
+        box.rotate(slope);
+        for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
+            run.page.steps(1);
+            REQUIRE_FALSE(run.asleep(1));
+        }
+        CHECK(box.center().distance(Vec2{400, 300} + normal * 30.0) > 3.0);  // it did slide
+    }
+}
+
+TEST_CASE("s5_5: pyramid_20 and heavy_on_light stand with sleep on, and fall asleep") {
+    for (const char* name : {"pyramid_20.json", "heavy_on_light.json"}) {
+        INFO(name);
+        const engine::Scene scene = sceneFile(fs::path(BENCH_SCENES_DIR) / name, engine::SolverKind::sequential_impulse);
+        REQUIRE(scene.world.sleep);
+        Sleepy run(scene.world);
+        engine::buildScene(run.page.core, scene.bodies);
+        const std::size_t top = run.page.core.objectCount() - 1;
+        run.page.steps(kStepsPerSecond);
+        const Vec2 start = run.page.core.object(top).center();
+        REQUIRE(run.stepUntilAllAsleep(20));
+        run.page.steps(30 * kStepsPerSecond);
+        CHECK(run.allAsleep());
+        CHECK(run.page.core.object(top).center().distance(start) < 0.5);
     }
 }
 
