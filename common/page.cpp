@@ -74,6 +74,13 @@ void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
     }
 }
 
+// Where the legend's box starts (page pixels): above the panel's bottom by its entries.
+int legend_top(const Document& document) {
+    const int entries = static_cast<int>(document.legend.size());
+    const int bottom = document.canvas.height() - kPanelMargin / 2;
+    return std::max(0, bottom - entries * kLineHeight - kPanelMargin);
+}
+
 void draw_legend(Image& page, const Document& document);
 
 }  // namespace
@@ -138,9 +145,12 @@ Image render_page(const Document& document) {
     // Laid out in page pixels, drawn in device pixels.
     const int text_left = document.canvas.width() + kPanelMargin;
     const int text_width_limit = kPanelWidth - 2 * kPanelMargin;
+    // Under a legend the echo stops a whole line short of its box, so no half-hidden
+    // line shows beneath it.
+    const int text_bottom = document.legend.empty() ? document.canvas.height() + kLineHeight : legend_top(document);
     int y = kPanelMargin;
     std::string_view echo = document.ui_echo;
-    while (!echo.empty() && y < document.canvas.height()) {
+    while (!echo.empty() && y + kLineHeight <= text_bottom) {
         const std::size_t end = echo.find('\n');
         const std::string line = printable(echo.substr(0, end));
         echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
@@ -161,11 +171,10 @@ namespace {
 void draw_legend(Image& page, const Document& document) {
     if (document.legend.empty()) return;
     const int k = document.canvas.scale();
-    const int entries = static_cast<int>(document.legend.size());
     const int left = document.canvas.width() + kPanelMargin / 2;
     const int right = document.canvas.width() + kPanelWidth - kPanelMargin / 2;
     const int bottom = document.canvas.height() - kPanelMargin / 2;
-    const int top = std::max(0, bottom - entries * kLineHeight - kPanelMargin);
+    const int top = legend_top(document);
     fill(page, left * k, top * k, right * k, bottom * k, kLegendBorder);
     fill(page, (left + 1) * k, (top + 1) * k, (right - 1) * k, (bottom - 1) * k, colors::kWhite);
     int y = top + kPanelMargin / 2;
