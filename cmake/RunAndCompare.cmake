@@ -6,12 +6,22 @@
 # ACTUAL is this test's own folder, and its diff/ below is compare_png's, not the
 # program's: a run refuses to replace a folder holding what it did not write, so the
 # test clears it first.
+# EXPECT=different (optional) turns the test round: it passes only when some picture
+# differs (cmake/StrictPictures.cmake: a stage's engine on the next stage's pictures).
+# compare_png prints, for each picture, how many pixels differ and the box they are in.
 file(REMOVE_RECURSE ${ACTUAL})
 execute_process(COMMAND ${PROGRAM} ${ARGUMENTS} --out ${ACTUAL} ${AFTER} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${PROGRAM} exited with status ${status}")
 endif()
 execute_process(COMMAND ${COMPARE} ${EXPECTED} ${ACTUAL} --diff-dir ${ACTUAL}/diff RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
+if(EXPECT STREQUAL "different")
+  if(status EQUAL 0)
+    message(FATAL_ERROR "${PROGRAM} draws every picture of ${EXPECTED}: "
+      "the pictures test cannot tell its engine from the stage's")
+  elseif(NOT status EQUAL 1)
+    message(FATAL_ERROR "compare_png could not compare the pictures (status ${status})")
+  endif()
+elseif(NOT status EQUAL 0)
   message(FATAL_ERROR "pictures differ from ${EXPECTED}; see ${ACTUAL}/diff")
 endif()

@@ -13,6 +13,9 @@
 #   <id>.pictures      runs the default program and compares its pictures with expected/
 #   <id>.overlay_pictures  when expected/overlay/ exists: the same run with --overlay,
 #                      compared with expected/overlay/ (labels also pictures and overlay)
+#   <id>.names         when names.md exists: the name map's check (label names; that the
+#                      check can fail is tested once, names.checker_sees_renames)
+#   <id>.readme_keys   with them: the README's Keys table against --help's key list
 #
 # Each call is also remembered (global properties PHYSICS_STAGES and
 # PHYSICS_STAGE_<id>_<FOLDER|PROGRAM|CHAPTER|FEATURES>), so that cmake/Workbench.cmake
@@ -35,6 +38,12 @@ function(add_stage id)
     stage_test_program(${id}_tests ${id} ${id}_engine ${program})
     # Every test file includes Catch2's 17,000-line header: parse it once per executable.
     target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
+    # The tests check, the engine computes: the engine keeps the build's -O3, the test
+    # files (Catch2's macros, most of a full build's compile time) take -O1, which
+    # compiles them in two thirds of the time and cannot change a result: the numbers
+    # they check come from the engine, and -ffp-contract=off keeps every level's doubles
+    # the same.
+    target_compile_options(${id}_tests PRIVATE $<$<CONFIG:Release>:-O1>)
     add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 
     foreach(feature IN LISTS STAGE_FEATURES)
@@ -57,6 +66,18 @@ function(add_stage id)
       -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
       -P ${PROJECT_SOURCE_DIR}/cmake/RunAndCompare.cmake)
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels};pictures")
+
+  # names.md, the book's names against ours: each C++ name it gives is where it says
+  # (tests/names/).
+  if(EXISTS ${dir}/names.md)
+    set(check_names ${PROJECT_SOURCE_DIR}/tests/names/check_name_map.sh)
+    add_test(NAME ${id}.names COMMAND bash ${check_names} ${dir})
+    # The README's Keys table, which links names.md, is the key list of --help
+    # (stage_keys_test checks that list against what the keys do).
+    add_test(NAME ${id}.readme_keys
+      COMMAND bash ${PROJECT_SOURCE_DIR}/tests/names/check_readme_keys.sh $<TARGET_FILE:${program}> ${dir}/README.md)
+    set_tests_properties(${id}.names ${id}.readme_keys PROPERTIES LABELS "${labels};names")
+  endif()
 
   if(EXISTS ${dir}/expected/overlay)
     add_test(NAME ${id}.overlay_pictures

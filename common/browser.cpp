@@ -45,17 +45,21 @@ class Recorder {
 public:
     Recorder(const Options& options, fs::path folder) : options_(options), folder_(std::move(folder)) {
         if (options.every > 0) {
-            sheet_frames_ = contact_sheet_frames(options.frames, options.every);
+            sheet_frames_ = contact_sheet_frames(options.frames - options.from, options.every);
+            for (int& frame : sheet_frames_) frame += options.from;
             sheet_.emplace(static_cast<int>(sheet_frames_.size()), options.scale);
         }
     }
 
-    // Called after animation frame k (0 to options.frames - 1) has run.
+    // Called after animation frame k (0 to options.frames - 1) has run. Counting starts
+    // at options.from: frames before it are never drawn.
     void after_frame(int k, const Document& document) {
+        const int shown = k - options_.from;
+        if (shown < 0) return;
         const bool last = k == options_.frames - 1;
-        const bool saved = options_.every > 0 && k % options_.every == 0;
+        const bool saved = options_.every > 0 && shown % options_.every == 0;
         const bool on_sheet = next_on_sheet_ < sheet_frames_.size() && sheet_frames_[next_on_sheet_] == k;
-        const bool in_gif = options_.gif && k % options_.gif_every == 0;
+        const bool in_gif = options_.gif && shown % options_.gif_every == 0;
         if (!last && !saved && !on_sheet && !in_gif) return;
 
         const Image page = render_page(document);
@@ -156,7 +160,7 @@ double page_pixels(const Canvas& canvas) {
            canvas.scale();
 }
 
-// How many of `frames` frames are taken when every `every`-th is, from frame 0 on.
+// How many of `frames` frames are taken when every `every`-th is, from the first on.
 double frames_taken(int frames, int every) { return every > 0 ? static_cast<double>((frames - 1) / every + 1) : 0.0; }
 
 std::optional<std::string> page_excess(const Canvas& canvas) {
@@ -232,15 +236,18 @@ double contact_memory_bound(const StepCost& step, const Options& options) {
 
 double encoding_bound(double page_pixels, const Options& options) {
     // The contact sheet holds every saved page at a quarter of its pixels or less.
-    const double pictures = 1.0 + frames_taken(options.frames, options.every) * 1.25;
-    const double gif_frames = options.gif ? frames_taken(options.frames, options.gif_every) : 0.0;
+    const int shown = options.frames - options.from;
+    const double pictures = 1.0 + frames_taken(shown, options.every) * 1.25;
+    const double gif_frames = options.gif ? frames_taken(shown, options.gif_every) : 0.0;
     return page_pixels * (pictures + kGifPixelCost * gif_frames);
 }
 
 int run(PageScripts& scripts, Window& window, const Options& options) {
     // parse_command_line never gives these; a test or a stage that builds Options by hand might.
-    if (options.frames < 1 || (options.gif && options.gif_every < 1)) {
-        throw std::invalid_argument("browser::run: options.frames and options.gif_every must be at least 1");
+    if (options.frames < 1 || (options.gif && options.gif_every < 1) || options.from < 0 ||
+        options.from >= options.frames) {
+        throw std::invalid_argument(
+            "browser::run: options.frames and options.gif_every must be at least 1, options.from below options.frames");
     }
     // A stage that made its window without the options would draw --scale K at scale 1.
     if (window.document.canvas.scale() != options.scale) {

@@ -24,7 +24,7 @@ constexpr double kMaxFrameMs = 10'000.0;  // ten seconds a frame is already a sl
 // the largest canvas are about a gigabyte.
 constexpr int kMostPictures = 1'000;
 
-// How many frames of `frames` are saved when every `every`-th is, from frame 0 on.
+// How many frames of `frames` are saved when every `every`-th is, from the first on.
 int frames_saved(int frames, int every) { return (frames - 1) / every + 1; }
 
 // The whole of `text` as a T, or nothing. from_chars takes no sign for unsigned types,
@@ -122,6 +122,7 @@ std::string help_footer(const StageDefaults& defaults) {
         footer += "\n  " + line.keys + std::string(widest - line.keys.size() + 2, ' ') + line.meaning;
     }
     footer += "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
+              "F12 saves the page shown as <stage>_frame_NNNN.png in the current folder,\n"
               "Escape or closing the window ends the session.";
     return footer;
 }
@@ -141,7 +142,7 @@ std::vector<std::string> replay_command(const CLI::App& app, int argc, const cha
 
 // Options that make pictures have no place in a live session, which writes none.
 void refuse_picture_options_when_live(const CLI::App& app) {
-    for (const char* name : {"--out", "--every", "--gif", "--gif-every"}) {
+    for (const char* name : {"--out", "--from", "--every", "--gif", "--gif-every"}) {
         if (app.count(name) > 0) {
             throw UsageError(std::string(name) +
                              ": a --live session writes no pictures; record it with --record FILE and replay that");
@@ -173,7 +174,7 @@ struct OptionTexts {
         // valid as it grows.
         for (const ExtraOption& option : defaults.extra_options) extra.emplace(option.name, option.default_value);
     }
-    std::string out, frames, every, gif_every, seed, keys;
+    std::string out, frames, from = "0", every, gif_every, seed, keys;
     std::string frame_ms;  // read only when given, so the default stays exactly 1000/60
     std::string scale = "1";
     bool gif = false, no_gif = false, live = false, overlay = false;  // switches: no value to check
@@ -189,6 +190,9 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
         ->type_name("DIR")->capture_default_str();
     app.add_option("--frames", texts.frames, "how many animation frames to run")
         ->type_name("N")->capture_default_str();
+    app.add_option("--from", texts.from,
+                   "save pictures from frame F on; the frames before it run unseen (a replay's idle start)")
+        ->type_name("F")->capture_default_str();
     app.add_option("--every", texts.every,
                    "also save every K-th frame as frame_NNNN.png, and all of them small on contact_sheet.png"
                    " (0: only final.png)")
@@ -266,20 +270,26 @@ bool read_picture_options(const CLI::App& app, const OptionTexts& texts, const S
     options.out_dir = texts.out;
     if (texts.out.empty()) throw UsageError("--out: must name a folder (got \"\")");
     options.frames = int_option("--frames", texts.frames, 1, KeyScript::kMaxFrame);
+    options.from = int_option("--from", texts.from, 0, KeyScript::kMaxFrame);
+    if (options.from >= options.frames) {
+        throw UsageError("--from: frame " + std::to_string(options.from) + " is not run: --frames " +
+                         std::to_string(options.frames) + " runs frames 0 to " + std::to_string(options.frames - 1));
+    }
     options.every = int_option("--every", texts.every, 0, KeyScript::kMaxFrame);
     const bool want_gif = gif_wanted(texts.gif, texts.no_gif, defaults.gif);
-    if (options.every > 0 && frames_saved(options.frames, options.every) > kMostPictures) {
-        throw UsageError("--every: " + std::to_string(options.frames) + " frames would save " +
-                         std::to_string(frames_saved(options.frames, options.every)) + " pictures, more than the " +
+    const int shown = options.frames - options.from;  // the frames whose pictures a run may save
+    if (options.every > 0 && frames_saved(shown, options.every) > kMostPictures) {
+        throw UsageError("--every: " + std::to_string(shown) + " frames would save " +
+                         std::to_string(frames_saved(shown, options.every)) + " pictures, more than the " +
                          std::to_string(kMostPictures) + " a run may (a larger --every, or fewer --frames)");
     }
     options.gif_every = int_option("--gif-every", texts.gif_every, 1, KeyScript::kMaxFrame);
     if (app.count("--gif-every") > 0 && !want_gif) {
         throw UsageError("--gif-every: there is no GIF to space out (add --gif)");
     }
-    if (want_gif && !texts.live && frames_saved(options.frames, options.gif_every) > kMostPictures) {
-        throw UsageError("--gif-every: " + std::to_string(options.frames) + " frames would make a GIF of " +
-                         std::to_string(frames_saved(options.frames, options.gif_every)) +
+    if (want_gif && !texts.live && frames_saved(shown, options.gif_every) > kMostPictures) {
+        throw UsageError("--gif-every: " + std::to_string(shown) + " frames would make a GIF of " +
+                         std::to_string(frames_saved(shown, options.gif_every)) +
                          " pictures, more than the " + std::to_string(kMostPictures) +
                          " a run may (a larger --gif-every, fewer --frames, or --no-gif)");
     }
@@ -325,6 +335,7 @@ LiveOptions live_options(const CLI::App& app, const OptionTexts& texts, const St
     live.events = texts.live_events;
     live.screenshot = texts.live_screenshot;
     live.title = defaults.title + " (" + defaults.id + ")";
+    live.stage_id = defaults.id;
     std::vector<std::pair<std::string, std::string>> shaping{
         {"--seed", texts.seed}, {"--frame-ms", texts.frame_ms}, {"--scale", texts.scale}};
     for (const auto& [name, value] : texts.extra) shaping.emplace_back(name, value);

@@ -1,6 +1,6 @@
 #pragma once
 // One command-line shape for every stage (CLI11):
-//   --out DIR  --frames N  --every K  --seed S  --keys SCRIPT  --frame-ms MS
+//   --out DIR  --frames N  --from F  --every K  --seed S  --keys SCRIPT  --frame-ms MS
 //   --gif  --no-gif  --gif-every N  --scale K  --live  --record FILE  --help
 // and, on a stage with an overlay (StageDefaults::overlay), --overlay and the key t
 // plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
@@ -60,6 +60,8 @@ struct LiveOptions {
     bool on = false;                    // --live
     std::filesystem::path record;       // --record FILE: where the session's key script goes ("" for nowhere)
     std::string title;                  // the window's title
+    std::string stage_id;               // "s4_4": names the pages F12 saves
+    std::filesystem::path screenshot_folder;  // where F12 saves them: the current folder ("")
     // The command that replays a recorded session, but for its --keys, --frames and
     // picture options: the program as it was called, and every option given that shapes
     // the run (--seed, --frame-ms, --scale, the stage's own options).
@@ -75,6 +77,10 @@ struct LiveOptions {
 struct Options {
     std::filesystem::path out_dir;
     int frames = 1;
+    // --from F: the pictures, the contact sheet and the GIF start at frame F (frame F,
+    // F + every, ...); the frames before it run all the same, unseen. A replay of a live
+    // session starts at its first key press so, and not with the idle wait before it.
+    int from = 0;
     int every = 0;
     bool gif = false;   // write animation.gif: a picture after frames 0, N, 2N, ... (N = gif_every)
     int gif_every = 2;

@@ -24,6 +24,17 @@ int largest_channel_difference(Color a, Color b) {
 
 }  // namespace
 
+void PixelBox::add(int x, int y) {
+    if (empty()) {
+        *this = {x, y, x, y};
+        return;
+    }
+    left = std::min(left, x);
+    top = std::min(top, y);
+    right = std::max(right, x);
+    bottom = std::max(bottom, y);
+}
+
 ImageDifference compare_images(const Image& expected, const Image& actual, const Tolerance& tolerance) {
     ImageDifference result;
     result.same_size = expected.width == actual.width && expected.height == actual.height;
@@ -44,6 +55,7 @@ ImageDifference compare_images(const Image& expected, const Image& actual, const
             }
             if (differs) {
                 ++result.differing_pixels;
+                result.region.add(x, y);
                 result.diff.set(x, y, kDifferentColor);
             } else if (in_expected) {
                 result.diff.set(x, y, faded(expected.at(x, y)));

@@ -196,6 +196,10 @@ std::size_t KeyScript::pressCount(const KeySet& keys) const {
     return count;
 }
 
+int KeyScript::firstFrame() const {
+    return presses_.empty() ? -1 : presses_.begin()->first;
+}
+
 int KeyScript::lastFrame() const {
     return presses_.empty() ? -1 : presses_.rbegin()->first;
 }

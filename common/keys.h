@@ -77,7 +77,8 @@ public:
     std::size_t pressCount() const;
     // How many presses there are of the keys in `keys`.
     std::size_t pressCount(const KeySet& keys) const;
-    // The last frame any key is pressed at (-1 for an empty script).
+    // The first and the last frame any key is pressed at (-1 for an empty script).
+    int firstFrame() const;
     int lastFrame() const;
     bool empty() const { return presses_.empty(); }
     // The first key of the script, in frame order, that `keys` does not hold.

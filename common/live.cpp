@@ -41,8 +41,9 @@ std::string shell_word(const std::string& word) {
     return quoted + "'";
 }
 
-// The one command that replays a recorded session into pictures and a GIF.
-std::string replay_command(const LiveOptions& live, int frames) {
+// The one command that replays a recorded session into pictures and a GIF, from the
+// frame of its first key press on (-1: none).
+std::string replay_command(const LiveOptions& live, int frames, int first_press) {
     std::string command;
     for (const std::string& word : live.replay_command) {
         if (!command.empty()) command += ' ';
@@ -50,6 +51,7 @@ std::string replay_command(const LiveOptions& live, int frames) {
     }
     command += " --keys \"$(cat " + shell_word(live.record.string()) + ")\"";
     command += " --frames " + std::to_string(frames);
+    if (first_press > 0) command += " --from " + std::to_string(first_press);
     command += " --every " + std::to_string(live.replay_every);
     if (live.replay_gif) command += " --gif";
     return command;
@@ -127,6 +129,7 @@ public:
                 case LiveInput::Kind::Step:
                     if (paused_) ++steps_;
                     break;
+                case LiveInput::Kind::Screenshot: saveShownPage(); break;
                 case LiveInput::Kind::PageKey:
                     if (options_.stage_keys.empty() || options_.stage_keys.contains(input.key)) {
                         waiting_.push_back(input.key);
@@ -141,6 +144,7 @@ public:
     // (a step asked for while paused runs one). A key script cannot name a frame past
     // KeyScript::kMaxFrame, so a session stops there (after about 46 hours at 60 Hz).
     void refresh() {
+        if (notice_refreshes_ > 0 && --notice_refreshes_ == 0) notice_.clear();
         if (frames_run_ >= KeyScript::kMaxFrame) return;
         if (!paused_) {
             runFrame();
@@ -154,16 +158,39 @@ public:
     int framesRun() const { return frames_run_; }
     const KeyScript& recorded() const { return recorded_; }
     int presses() const { return presses_; }
+    bool screenshotFailed() const { return screenshot_failed_; }
 
 private:
+    // The page the reader is looking at, as the replay names that frame's picture, with
+    // the stage's id in front so that screenshots of several stages can share a folder.
+    void saveShownPage() {
+        const int frame = frames_run_ - 1;
+        char name[48];
+        std::snprintf(name, sizeof name, "%s_frame_%04d.png", options_.live.stage_id.c_str(), frame);
+        const fs::path file = options_.live.screenshot_folder / name;
+        try {
+            check_may_write(file, WriteTarget::file, files_read(options_));
+            write_png(file, page_);
+            std::cout << "F12: saved frame " << frame << " to " << file.string() << '\n';
+            notice_ = std::string("F12: saved ") + name;
+        } catch (const FileError& error) {
+            std::cerr << "F12: cannot save frame " << frame << " to " << in_quotes(file.string()) << ": "
+                      << printable(error.what()) << '\n';
+            notice_ = std::string("F12: cannot save ") + name + " (see the terminal)";
+            screenshot_failed_ = true;
+        }
+        notice_refreshes_ = kNoticeRefreshes;
+    }
+
     void press(int frame, Key key) {
         press_key(scripts_, window_, options_, key);
         recorded_.press(frame, key);
         ++presses_;
     }
 
-    // "frame 41 (0.68 s)   Space: pause   Esc: end", or while paused "paused after
-    // frame 41 (0.68 s)   waiting: f g   period: one frame   Space: go on   Esc: end".
+    // "frame 41 (0.68 s)   F12: save page   Space: pause   Esc: end", or while paused
+    // "paused after frame 41 (0.68 s)   waiting: f g   F12: save page   period: one frame
+    // Space: go on   Esc: end", with "F12: saved s4_4_frame_0041.png" for a while after F12.
     std::string status() const {
         const int shown = frames_run_ - 1;
         const double seconds = frames_run_ * options_.frame_ms / 1000.0;
@@ -174,6 +201,8 @@ private:
             for (const Key key : waiting_) text += ' ' + key_name(key);
         }
         if (!options_.live.record.empty()) text += "   recording";
+        // What F12 did takes the place of its hint for a while: the line has room for one.
+        text += "   " + (notice_.empty() ? std::string("F12: save page") : notice_);
         text += paused_ ? "   period: one frame   Space: go on   Esc: end" : "   Space: pause   Esc: end";
         return text;
     }
@@ -188,6 +217,11 @@ private:
     int frames_run_ = 0;
     bool paused_ = false;
     int steps_ = 0;
+    // What F12 did, shown on the status line for a couple of seconds.
+    static constexpr int kNoticeRefreshes = 120;
+    std::string notice_;
+    int notice_refreshes_ = 0;
+    bool screenshot_failed_ = false;
 };
 
 }  // namespace
@@ -219,7 +253,7 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     if (record.empty()) {
         std::cout << "played " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds
                   << " s); --record FILE keeps the key presses of a session to replay them\n";
-        return 0;
+        return session.screenshotFailed() ? 1 : 0;
     }
     const std::string script = session.recorded().text();
     try {
@@ -232,8 +266,8 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
               << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
               << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
-              << "  " << replay_command(options.live, frames) << '\n';
-    return 0;
+              << "  " << replay_command(options.live, frames, session.recorded().firstFrame()) << '\n';
+    return session.screenshotFailed() ? 1 : 0;
 }
 
 }  // namespace browser

@@ -15,11 +15,18 @@
 // pressed since the one before are pressed before the next frame, in order, then it
 // runs and shows. A key pressed before frame k is recorded as KEY@k, so a session that
 // showed frames 0 to n-1 replays with `--keys SCRIPT --frames n`, and the replay's
-// final.png is the last page the window showed. Space pauses: no frame runs, the
+// final.png is the last page the window showed. The printed replay command adds
+// `--from F`, F the frame of the first key press: the frames before it still run (the
+// world moved while the reader looked on, and the replay must compute the same), but
+// its pictures and GIF start there, with what the reader did, not the wait before it.
+// Space pauses: no frame runs, the
 // simulated clock stands still, and keys pressed meanwhile wait for the next frame that
 // runs. Period runs one frame while paused. Pausing is not recorded, since it changes
 // nothing a replay computes. Escape or closing the window ends the session; keys still
-// waiting then were never pressed on the page, and are not recorded either.
+// waiting then were never pressed on the page, and are not recorded either. F12 saves
+// the page shown (without the status line) in the current folder as
+// <stage id>_frame_NNNN.png, NNNN the frame shown: the replay's frame_NNNN.png of the
+// same frame is the same picture.
 //
 // Under the page the window shows one status line (the frame, whether it is paused,
 // the keys waiting, the live keys); the page above it is the saved picture, pixel for
@@ -36,7 +43,7 @@ namespace browser {
 
 // What the reader did at the keyboard or to the window.
 struct LiveInput {
-    enum class Kind { PageKey, Pause, Step, End };
+    enum class Kind { PageKey, Pause, Step, Screenshot, End };
     Kind kind = Kind::PageKey;
     Key key = Key::A;  // the key, for PageKey
 };
@@ -61,7 +68,8 @@ public:
 // options.stage_keys; others are let go). With options.live.record, writes the
 // session's key script there and prints the one command that replays it into pictures
 // and a GIF. Returns the exit status: 0; 1 with one line on stderr when the key script
-// cannot be written (the line then gives the script, so the session is not lost).
+// cannot be written (the line then gives the script, so the session is not lost), or
+// when a screenshot could not be saved (one line each, as it happens; the session goes on).
 int run_live(PageScripts& scripts, Window& window, const Options& options, Screen& screen);
 
 }  // namespace browser

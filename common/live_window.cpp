@@ -18,7 +18,7 @@
 namespace browser {
 namespace {
 
-// The keys a live window passes on: the page's keys, and the three of the session.
+// The keys a live window passes on: the page's keys, and the four of the session.
 std::optional<LiveInput> input_of(const SDL_KeyboardEvent& event) {
     using Kind = LiveInput::Kind;
     const SDL_Keycode code = event.keysym.sym;
@@ -42,6 +42,9 @@ std::optional<LiveInput> input_of(const SDL_KeyboardEvent& event) {
             if (event.repeat != 0) return std::nullopt;
             return LiveInput{Kind::Pause};
         case SDLK_PERIOD: return LiveInput{Kind::Step};
+        case SDLK_F12:
+            if (event.repeat != 0) return std::nullopt;
+            return LiveInput{Kind::Screenshot};
         case SDLK_ESCAPE: return LiveInput{Kind::End};
         default: return std::nullopt;
     }

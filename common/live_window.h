@@ -4,14 +4,15 @@
 // (build_features.h) says no and --live is refused with the one line kNoLiveSupport.
 //
 // Keys: a-z, 0-9 (and the keypad's), comma, Up and Down go to the page, held keys
-// repeating as a browser repeats them; Space pauses, period steps, Escape ends, and so
-// does the window's close button (live.h says what each does to the frames).
+// repeating as a browser repeats them; Space pauses, period steps, F12 saves the page
+// shown as a PNG, Escape ends, and so does the window's close button (live.h says what
+// each does to the frames).
 //
 // Two test hooks, hidden from --help, let a test drive the window where no one types:
 //   --live-events FILE       tokens NAME@REFRESH separated by spaces: before it looks
 //                            for input at refresh REFRESH (1 is the first after frame 0
 //                            shows), the window pushes a key-down event for the SDL key
-//                            named NAME ("F", "Space", ",", ".", "Escape", "Up") into
+//                            named NAME ("F", "Space", ",", ".", "F12", "Escape", "Up") into
 //                            SDL's event queue, or for NAME "close" the close button's
 //                            event; from there on they go the way a real key's do.
 //   --live-screenshot FILE   when the session ends, writes the last picture the window

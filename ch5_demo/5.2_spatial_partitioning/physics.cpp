@@ -61,6 +61,19 @@ void applyImpulse(RigidShape& a, RigidShape& b, const LeverArms& arms, Vec2 impu
     b.setAngularVelocity(b.angularVelocity() + arms.b.cross(impulse) * b.invInertia());
 }
 
+// The unit tangent against the sliding part of `velocity`: what is left of it off the
+// normal. A head-on hit leaves nothing there but rounding noise, some 1e-16 of the
+// speed, in any direction; normalized, it would become a whole unit vector, and
+// friction would push along it, even along the normal (docs/errata.md, "Friction from
+// rounding noise"). Sliding under 1e-9 of the speed is no sliding: no tangent.
+constexpr double kNoSliding = 1e-9;
+
+Vec2 againstTheSliding(Vec2 velocity, Vec2 normal) {
+    const Vec2 sliding = velocity - normal * velocity.dot(normal);
+    if (sliding.length() <= kNoSliding * velocity.length()) return {};
+    return sliding.normalize() * -1;
+}
+
 // What a collision does to the pair: push them apart, then change their velocities by
 // the impulse method, with rotation (Equations 4 to 6). Along the normal, the impulse
 // jN makes the contact points separate at e times the speed they met with (Newton's
@@ -97,7 +110,7 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
 
     // Equation 6. The tangent points against the sliding, from the velocity before the
     // normal impulse (which has changed the spin, and so the sliding, since).
-    const Vec2 tangent = (relative_velocity - normal * normal_speed).normalize() * -1;
+    const Vec2 tangent = againstTheSliding(relative_velocity, normal);
     double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / impulseResponse(a, b, arms, tangent);
     jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, arms, tangent * jT);

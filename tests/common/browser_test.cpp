@@ -157,6 +157,17 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
         CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png",
                                                         "frame_0001.png", "frame_0002.png"});
     }
+    SECTION("from frame 7, every 5 of 20 frames: 7, 12, 17, and none before") {
+        browser::Options options = options_for(out, 20, 5);
+        options.from = 7;
+        const Result result = run(options);
+        REQUIRE(result.status == 0);
+        CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0007.png",
+                                                        "frame_0012.png", "frame_0017.png"});
+        // Every frame ran all the same, those before 7 unseen.
+        CHECK(result.log.size() == 20);
+        CHECK(browser::read_png(out / "frame_0007.png").rgba != browser::read_png(out / "frame_0012.png").rgba);
+    }
     SECTION("frame numbers past 9999 grow beyond four digits") {
         const Result result = run(options_for(out, 10001, 10000));
         REQUIRE(result.status == 0);

@@ -124,7 +124,7 @@ TEST_CASE("command_line: --help prints the usage and stops with status 0") {
         CHECK_FALSE(outcome.parsed.options.has_value());
         CHECK(outcome.err.empty());
         CHECK_THAT(outcome.out, Catch::Contains("9.9 A Test Stage"));
-        for (const char* option : {"--out", "--frames", "--every", "--gif", "--no-gif", "--gif-every", "--seed", "--keys",
+        for (const char* option : {"--out", "--frames", "--from", "--every", "--gif", "--no-gif", "--gif-every", "--seed", "--keys",
                                    "--frame-ms", "--scene", "--dump"}) {
             CHECK_THAT(outcome.out, Catch::Contains(option));
         }
@@ -224,6 +224,19 @@ TEST_CASE("command_line: more pictures than a run may write are refused") {
         check_rejected({"--frames", "2001", "--gif", "--every", "0"},
                        "--gif-every: 2001 frames would make a GIF of 1001 pictures, more than the 1000 a run may");
     }
+}
+
+TEST_CASE("command_line: --from starts the pictures at a frame the run reaches") {
+    const Outcome outcome = parse({"--frames", "100", "--from", "99", "--every", "10"});
+    REQUIRE(outcome.parsed.options.has_value());
+    CHECK(outcome.parsed.options->from == 99);
+    CHECK(parse({}).parsed.options->from == 0);
+    check_rejected({"--frames", "100", "--from", "100"}, "--from: frame 100 is not run: --frames 100 runs frames 0 to 99");
+    check_rejected({"--from", "-1"}, "--from: must be a whole number from 0");
+    // Only the frames from F on count towards the most pictures a run may save.
+    CHECK(parse({"--frames", "10100", "--from", "100", "--every", "10"}).parsed.exit_status == 0);
+    check_rejected({"--frames", "10101", "--from", "100", "--every", "10"}, "--every: 10001 frames would save 1001 pictures");
+    check_rejected({"--live", "--from", "5"}, "--from: a --live session writes no pictures");
 }
 
 TEST_CASE("command_line: the program name is argv[0]'s file name, or the stage id without one") {
@@ -363,6 +376,7 @@ TEST_CASE("command_line: --live, --record and what goes with them") {
     CHECK(options.live.on);
     CHECK(options.live.record == "my session.keys");
     CHECK(options.live.title == "9.9 A Test Stage (s9_9)");
+    CHECK(options.live.stage_id == "s9_9");
     // The stage's default script is not played: the reader plays.
     CHECK(options.keys.empty());
     CHECK_FALSE(options.gif);

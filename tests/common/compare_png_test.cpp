@@ -150,3 +150,23 @@ TEST_CASE("compare_png: --diff-dir removes an old diff picture only when it wrot
     CHECK(compare(folder, quoted(b) + " " + quoted(b) + " --diff-dir " + quoted(diffs)).status == 0);
     CHECK(fs::exists(diffs / "b.png"));
 }
+
+TEST_CASE("compare_png: pictures match pixel for pixel by default, and a difference names its region") {
+    const test::ScratchFolder folder("compare_png_region");
+    const fs::path a = folder.path / "a.png", b = folder.path / "b.png", out = folder.path / "out.txt";
+    browser::write_png(a, browser::Image(10, 10));
+    browser::Image other(10, 10);
+    other.set(2, 3, browser::Color{254, 255, 255, 255});  // off by 1 in red: our pages need no slack
+    other.set(7, 5, browser::Color{0, 0, 0, 255});
+    browser::write_png(b, other);
+    const std::string line = quoted(COMPARE_PNG_PROGRAM) + " " + quoted(a) + " " + quoted(b) + " >" + quoted(out);
+    const int raw = std::system(line.c_str());
+    REQUIRE(WIFEXITED(raw));
+    CHECK(WEXITSTATUS(raw) == 1);
+    std::ifstream in(out);
+    const std::string said(std::istreambuf_iterator<char>(in), {});
+    // 2 of 100 pixels; the box from column 2 to 7 and row 3 to 5.
+    CHECK(said == "a.png: differing pixels 2 (2.0000%) in x 2-7, y 3-5, largest channel difference 255: DIFFERENT\n");
+    // The old slack of 2 per channel no longer hides the first pixel; asked for, it does.
+    CHECK(compare(folder, quoted(a) + " " + quoted(b) + " --channel 2 --share 0.01").status == 0);
+}

@@ -62,6 +62,28 @@ TEST_CASE("image_compare: the tolerance decides what differs and what matches") 
     CHECK_FALSE(result.within(Tolerance{.channel = 0, .pixel_share = 1.9 / 1200}));
 }
 
+TEST_CASE("image_compare: the region is the smallest box holding every differing pixel") {
+    CHECK(browser::compare_images(scene(), scene(), Tolerance{}).region.empty());
+
+    Image changed = scene();
+    changed.set(3, 4, Color{255, 218, 240, 255});
+    changed.set(20, 10, Color{20, 0, 0, 255});
+    changed.set(12, 25, Color{250, 250, 250, 255});  // white, each colour down by 5
+    // Columns 3, 20 and 12, rows 4, 10 and 25: x from 3 to 20, y from 4 to 25.
+    const browser::PixelBox box = browser::compare_images(scene(), changed, Tolerance{}).region;
+    CHECK(box.left == 3);
+    CHECK(box.right == 20);
+    CHECK(box.top == 4);
+    CHECK(box.bottom == 25);
+    // A pixel within the channel tolerance is no difference, and leaves the box: above a
+    // tolerance of 20 only (3, 4) is left (green off by 37; the others by 20 and 5).
+    const browser::PixelBox strict = browser::compare_images(scene(), changed, Tolerance{.channel = 20}).region;
+    CHECK(strict.left == 3);
+    CHECK(strict.right == 3);
+    CHECK(strict.top == 4);
+    CHECK(strict.bottom == 4);
+}
+
 TEST_CASE("image_compare: pictures of different sizes are reported, never matched") {
     const Image small(30, 20), wide(40, 10);
     const auto result = browser::compare_images(small, wide, Tolerance{.channel = 255, .pixel_share = 1.0});

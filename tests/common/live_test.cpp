@@ -4,6 +4,7 @@
 // (SDL) is tried by tests/live/.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <deque>
 #include <functional>
 #include <filesystem>
@@ -81,6 +82,7 @@ LiveInput key(Key k) { return {Kind::PageKey, k}; }
 const LiveInput kPause{Kind::Pause};
 const LiveInput kStep{Kind::Step};
 const LiveInput kEnd{Kind::End};
+const LiveInput kScreenshot{Kind::Screenshot};
 
 constexpr int kCanvasWidth = 60, kCanvasHeight = 40;
 
@@ -92,6 +94,7 @@ browser::Options live_options(const std::string& stage_keys = "d f g h") {
     options.live.replay_command = {"build/s9_9_test", "--seed", "7"};
     options.live.replay_every = 30;
     options.live.replay_gif = true;
+    options.live.stage_id = "s9_9";
     return options;
 }
 
@@ -138,6 +141,41 @@ browser::Image replay(const fs::path& out, const std::string& keys, int frames) 
     return browser::read_png(out / "final.png");
 }
 
+// A replay of the marking page as a recorded session's command runs it: pictures from
+// frame `from` on, every `every`-th, and a GIF where the build has one. Returns what it
+// printed.
+std::string replay_from(const fs::path& out, const std::string& keys, int frames, int from, int every) {
+    browser::Options options;
+    options.out_dir = out;
+    options.frames = frames;
+    options.from = from;
+    options.every = every;
+    options.gif = browser::gif_supported();
+    options.frame_ms = 10.0;
+    options.keys = browser::KeyScript::parse(keys);
+    browser::Window window(options.frame_ms, browser::Document{browser::Canvas(kCanvasWidth, kCanvasHeight), ""});
+    MarkingPage page(window.document);
+    int status = 0;
+    std::string printed;
+    {
+        const test::CapturedOutput captured;
+        status = browser::run(page, window, options);
+        printed = captured.out();
+    }
+    REQUIRE(status == 0);
+    return printed;
+}
+
+std::vector<std::string> pictures_in(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (name.ends_with(".png") || name.ends_with(".gif")) names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
 // The page part of a picture the live window showed: all but the status line under it.
 browser::Image page_part(const browser::Image& picture, int page_height) {
     browser::Image page(picture.width, page_height);
@@ -180,7 +218,7 @@ TEST_CASE("live: keys land in the next frame that runs; pausing stops the frames
                              "; replay them into pictures" + (browser::gif_supported() ? " and a GIF" : "") +
                              " with:\n"
                              "  build/s9_9_test --seed 7 --keys \"$(cat '" + options.live.record.string() +
-                             "')\" --frames 8 --every 30 --gif\n");
+                             "')\" --frames 8 --from 1 --every 30 --gif\n");
 
     // The replay's last frame is the last page shown, pixel for pixel, and the page the
     // marks tell: keys before the frames the script names.
@@ -258,4 +296,77 @@ TEST_CASE("live: a folder where the record file should go is refused before the 
     const Session session = play(options, {{key(Key::F)}});
     CHECK(session.status == 2);
     CHECK(session.shown.empty());
+}
+
+TEST_CASE("live: F12 saves the page shown, which is the replay's picture of that frame") {
+    test::ScratchFolder folder("live");
+    browser::Options options = live_options();
+    options.live.record = folder.path / "s.keys";
+    options.live.screenshot_folder = folder.path;
+    // Refresh 3 saves the page on screen, frame 2, then runs frame 3; paused at 4, the
+    // save at 5 is of frame 3 again, the page still shown.
+    const Session session = play(options, {{key(Key::F)}, {}, {kScreenshot}, {kPause}, {kScreenshot}, {kEnd}});
+    CHECK(session.status == 0);
+    CHECK(session.err.empty());
+    CHECK(folder.files() == std::vector<std::string>{"s.keys", "s9_9_frame_0002.png", "s9_9_frame_0003.png"});
+    CHECK_THAT(session.out, Catch::StartsWith("F12: saved frame 2 to " + (folder.path / "s9_9_frame_0002.png").string() +
+                                              "\nF12: saved frame 3 to "));
+    // The screenshots are the pages without the status line, as the replay draws them.
+    const std::string script = read_text(options.live.record);
+    CHECK(script == "f@1\n");
+    replay_from(folder.path / "replay", script, 4, 1, 1);
+    for (const char* frame : {"0002", "0003"}) {
+        INFO("frame " << frame);
+        const browser::Image saved = browser::read_png(folder.path / ("s9_9_frame_" + std::string(frame) + ".png"));
+        const browser::Image replayed = browser::read_png(folder.path / "replay" / ("frame_" + std::string(frame) + ".png"));
+        CHECK(saved.width == replayed.width);
+        CHECK(saved.height == replayed.height);
+        CHECK(saved.rgba == replayed.rgba);
+    }
+    // The page shown then, not the one after it.
+    CHECK(browser::read_png(folder.path / "s9_9_frame_0002.png").rgba !=
+          browser::read_png(folder.path / "s9_9_frame_0003.png").rgba);
+}
+
+TEST_CASE("live: a screenshot that cannot be saved is one line on stderr; the session goes on, status 1") {
+    test::ScratchFolder folder("live");
+    browser::Options options = live_options();
+    options.live.screenshot_folder = folder.path / "no such folder";
+    const Session session = play(options, {{kScreenshot}, {key(Key::F)}, {}});
+    CHECK(session.status == 1);
+    CHECK(session.shown.size() == 4);  // refreshes 0 to 3: the session went on
+    CHECK_THAT(session.err, Catch::StartsWith("F12: cannot save frame 0 to \"" +
+                                              (options.live.screenshot_folder / "s9_9_frame_0000.png").string() + "\": "));
+    CHECK(session.err.find('\n') == session.err.size() - 1);
+    CHECK(folder.files().empty());
+}
+
+TEST_CASE("live: a recording whose first key came late replays into the frames from that key on") {
+    test::ScratchFolder folder("live");
+    browser::Options options = live_options();
+    options.live.record = folder.path / "late.keys";
+    // 39 idle refreshes, f at refresh 40 (before frame 40), 5 more frames, then the end.
+    std::vector<std::vector<LiveInput>> batches(39);
+    batches.push_back({key(Key::F)});
+    for (int i = 0; i < 5; ++i) batches.emplace_back();
+    batches.push_back({kEnd});
+    const Session session = play(options, batches);
+    CHECK(session.status == 0);
+    REQUIRE(session.shown.size() == 46);  // frames 0 to 45
+    const std::string script = read_text(options.live.record);
+    CHECK(script == "f@40\n");
+    CHECK_THAT(session.out, Catch::EndsWith("\" --frames 46 --from 40 --every 30 --gif\n"));
+
+    // The replay runs all 46 frames, and keeps 40 to 45: its first picture is frame 40,
+    // the page the window showed as the key went in, its last the last one shown.
+    const fs::path out = folder.path / "replay";
+    const std::string printed = replay_from(out, script, 46, 40, 30);
+    std::vector<std::string> expected{"contact_sheet.png", "final.png", "frame_0040.png"};
+    if (browser::gif_supported()) expected.insert(expected.begin(), "animation.gif");
+    CHECK(pictures_in(out) == expected);
+    const int height = browser::read_png(out / "final.png").height;
+    CHECK(browser::read_png(out / "frame_0040.png").rgba == page_part(session.shown[40], height).rgba);
+    CHECK(browser::read_png(out / "final.png").rgba == page_part(session.shown[45], height).rgba);
+    // Frames 40, 42 and 44 in the GIF: none of the 40 idle frames before the key.
+    if (browser::gif_supported()) CHECK_THAT(printed, Catch::EndsWith("animation.gif (3 frames)\n"));
 }

@@ -46,13 +46,15 @@ TEST_CASE("rectangle circle collision: R3, straight in front of a face") {
     // Along the face, (12, -3) . (20, 0) > 0 and (-8, -3) . (-20, 0) > 0: neither end,
     // so R3. Radius 4 > 3: depth 1, normal (0, -1); from the rim (2, -8) + (0, 4) =
     // (2, -4) to the face, (2, -5).
-    requireInfo(collide(kBox, engine::Circle({2, -8}, 4)), 1, {0, -1}, {2, -4}, {2, -5});
+    requireInfo("R3, in front of the top face (radius 4)", collide(kBox, engine::Circle({2, -8}, 4)),
+                {1, {0, -1}, {2, -4}, {2, -5}});
     // Radius exactly 3: touching the face, and in R3 that is no collision (3 < 3 fails).
     CHECK_FALSE(collide(kBox, engine::Circle({2, -8}, 3)).has_value());
     CHECK_FALSE(collide(kBox, engine::Circle({2, -8}, 2)).has_value());
     // Centre (14, 2): face 0: -(2 + 5) = -7; face 1: 14 - 10 = 4 > 0, R3 of the right
     // face. Radius 5: depth 1, normal (1, 0), from (9, 2) to (10, 2).
-    requireInfo(collide(kBox, engine::Circle({14, 2}, 5)), 1, {1, 0}, {9, 2}, {10, 2});
+    requireInfo("R3, in front of the right face", collide(kBox, engine::Circle({14, 2}, 5)),
+                {1, {1, 0}, {9, 2}, {10, 2}});
 }
 
 TEST_CASE("rectangle circle collision: R1, past the corner where the face starts") {
@@ -60,9 +62,11 @@ TEST_CASE("rectangle circle collision: R1, past the corner where the face starts
     // comes first). (c - v0) . (v1 - v0) = (-3, -4) . (20, 0) = -60 < 0: R1, the corner
     // v0, 5 away (3-4-5). Radius 6: depth 1, normal (-0.6, -0.8); from the rim
     // c - 6 normal = (-9.4, -4.2) to the corner (-10, -5).
-    requireInfo(collide(kBox, engine::Circle({-13, -9}, 6)), 1, {-0.6, -0.8}, {-9.4, -4.2}, {-10, -5});
+    requireInfo("the corner case R1 (radius 6)", collide(kBox, engine::Circle({-13, -9}, 6)),
+                {1, {-0.6, -0.8}, {-9.4, -4.2}, {-10, -5}});
     // Radius exactly 5 touches the corner, and there that counts: depth 0 at v0.
-    requireInfo(collide(kBox, engine::Circle({-13, -9}, 5)), 0, {-0.6, -0.8}, {-10, -5}, {-10, -5});
+    requireInfo("the corner case R1, touching (radius 5)", collide(kBox, engine::Circle({-13, -9}, 5)),
+                {0, {-0.6, -0.8}, {-10, -5}, {-10, -5}});
     CHECK_FALSE(collide(kBox, engine::Circle({-13, -9}, 4.9)).has_value());
 }
 
@@ -70,31 +74,36 @@ TEST_CASE("rectangle circle collision: R2, past the corner where the face ends")
     // Centre (13, -9): face 0, distance 4. (c - v0) . (v1 - v0) = (23, -4) . (20, 0) > 0,
     // not R1; (c - v1) . (v0 - v1) = (3, -4) . (-20, 0) = -60 < 0: R2, the corner v1,
     // 5 away. Radius 6: depth 1, normal (0.6, -0.8), from (9.4, -4.2) to (10, -5).
-    requireInfo(collide(kBox, engine::Circle({13, -9}, 6)), 1, {0.6, -0.8}, {9.4, -4.2}, {10, -5});
+    requireInfo("the corner case R2 of the top face", collide(kBox, engine::Circle({13, -9}, 6)),
+                {1, {0.6, -0.8}, {9.4, -4.2}, {10, -5}});
     // Centre (13, 9): face 0: -(9 + 5) < 0; face 1: 13 - 10 = 3 > 0. Along face 1,
     // (c - v1) . (v2 - v1) = (3, 14) . (0, 10) > 0 and (c - v2) . (v1 - v2) =
     // (3, 4) . (0, -10) = -40 < 0: R2 of face 1, the corner v2. Radius 6: depth 1,
     // normal (0.6, 0.8), from (13, 9) - 6 (0.6, 0.8) = (9.4, 4.2) to (10, 5).
-    requireInfo(collide(kBox, engine::Circle({13, 9}, 6)), 1, {0.6, 0.8}, {9.4, 4.2}, {10, 5});
+    requireInfo("the corner case R2 of the right face", collide(kBox, engine::Circle({13, 9}, 6)),
+                {1, {0.6, 0.8}, {9.4, 4.2}, {10, 5}});
 }
 
 TEST_CASE("rectangle circle collision: centre inside, out through the nearest face") {
     // Centre (6, 1): distances -6 (top), -4 (right), -4 (bottom), -16 (left). The least
     // far behind is -4, right face first. Depth 2 - (-4) = 6, normal (1, 0): from the rim
     // (6, 1) - 2 (1, 0) = (4, 1) to (10, 1) on the right face.
-    requireInfo(collide(kBox, engine::Circle({6, 1}, 2)), 6, {1, 0}, {4, 1}, {10, 1});
+    requireInfo("centre inside, nearest the right face", collide(kBox, engine::Circle({6, 1}, 2)),
+                {6, {1, 0}, {4, 1}, {10, 1}});
     // A circle far larger than the rectangle, centred on it: nearest face top, 5 behind.
-    requireInfo(collide(kBox, engine::Circle({0, 0}, 100)), 105, {0, -1}, {0, 100}, {0, -5});
+    requireInfo("a circle far larger than the rectangle", collide(kBox, engine::Circle({0, 0}, 100)),
+                {105, {0, -1}, {0, 100}, {0, -5}});
 }
 
 TEST_CASE("rectangle circle collision: centre exactly on a face, exactly on a corner") {
     // Centre (3, -5) on the top face: distance 0 is not in front, so it counts as
     // inside, nearest the top face (0 beats -7, -10, -13). Radius 2: depth 2, normal
     // (0, -1), from (3, -3) to the centre (3, -5).
-    requireInfo(collide(kBox, engine::Circle({3, -5}, 2)), 2, {0, -1}, {3, -3}, {3, -5});
+    requireInfo("centre on the top face", collide(kBox, engine::Circle({3, -5}, 2)), {2, {0, -1}, {3, -3}, {3, -5}});
     // Centre on v1 (10, -5): distance 0 from the top face and from the right face; the
     // top face comes first. Radius 3: depth 3, normal (0, -1), from (10, -2) to (10, -5).
-    requireInfo(collide(kBox, engine::Circle({10, -5}, 3)), 3, {0, -1}, {10, -2}, {10, -5});
+    requireInfo("centre on the corner v1", collide(kBox, engine::Circle({10, -5}, 3)),
+                {3, {0, -1}, {10, -2}, {10, -5}});
 }
 
 TEST_CASE("rectangle circle collision: a turned rectangle, and the pass's direction") {
@@ -105,11 +114,13 @@ TEST_CASE("rectangle circle collision: a turned rectangle, and the pass's direct
     box.rotate(std::numbers::pi / 4);
     const Vec2 n = Vec2{1, -1} * (1 / std::sqrt(2.0));
     const engine::Circle ball(n * 8, 4);
-    requireInfo(collide(box, ball), 1, n, n * 4, n * 5);
+    requireInfo("the turned rectangle, asked by the rectangle", collide(box, ball), {1, n, n * 4, n * 5});
     // The raw normal points from the rectangle to the circle whichever asks; the pass
     // turns it to point from its first shape to its second.
-    requireInfo(engine::findCollision(box, ball), 1, n, n * 4, n * 5);
-    requireInfo(engine::findCollision(ball, box), 1, -n, n * 5, n * 4);
+    requireInfo("the turned rectangle, the pass from the rectangle", engine::findCollision(box, ball),
+                {1, n, n * 4, n * 5});
+    requireInfo("the turned rectangle, the pass from the circle", engine::findCollision(ball, box),
+                {1, -n, n * 5, n * 4});
 }
 
 TEST_CASE("rectangle circle collision: 40,000 random pairs agree with the point-to-polygon distance") {

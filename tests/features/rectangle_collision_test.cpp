@@ -59,11 +59,11 @@ TEST_CASE("rectangle collision: axis-aligned overlap, from either side") {
     // A's first corner with x = 10, (10, -5); the segment runs from B's face, 3 to the
     // left, (7, -5), to that corner.
     const engine::Rectangle a({0, 0}, 20, 10), b({12, 3}, 10, 10);
-    requireInfo(a.collisionTest(b), 3, {1, 0}, {7, -5}, {10, -5});
+    requireInfo("side by side, asked by A", a.collisionTest(b), {3, {1, 0}, {7, -5}, {10, -5}});
     // From B: A's right face wins the tie, support point B's first corner with x = 7,
     // (7, -2); normal (1, 0) turned to (-1, 0); from (10, -2) on A's face to (7, -2).
-    requireInfo(b.collisionTest(a), 3, {-1, 0}, {10, -2}, {7, -2});
-    requireInfo(engine::findCollision(b, a), 3, {-1, 0}, {10, -2}, {7, -2});
+    requireInfo("side by side, asked by B", b.collisionTest(a), {3, {-1, 0}, {10, -2}, {7, -2}});
+    requireInfo("side by side, the pass from B", engine::findCollision(b, a), {3, {-1, 0}, {10, -2}, {7, -2}});
 }
 
 TEST_CASE("rectangle collision: a turned square poking into a face") {
@@ -76,10 +76,10 @@ TEST_CASE("rectangle collision: a turned square poking into a face") {
     const engine::Rectangle a({0, 0}, 20, 20);
     const engine::Rectangle b = turned({0, -14}, 10, 10, kPi / 4);
     // A's face wins: normal (0, -1) from A towards B, segment from B's corner up to A's face.
-    requireInfo(a.collisionTest(b), depth, {0, -1}, tip, {0, -10});
+    requireInfo("the diamond poking in, asked by A", a.collisionTest(b), {depth, {0, -1}, tip, {0, -10}});
     // From B the same face is the other's, so its normal is turned: (0, 1), from B to A,
     // and the segment runs from A's face down to B's corner.
-    requireInfo(b.collisionTest(a), depth, {0, 1}, {0, -10}, tip);
+    requireInfo("the diamond poking in, asked by B", b.collisionTest(a), {depth, {0, 1}, {0, -10}, tip});
 }
 
 TEST_CASE("rectangle collision: one rectangle inside the other") {
@@ -89,7 +89,7 @@ TEST_CASE("rectangle collision: one rectangle inside the other") {
     // B's left face wins, with A's first corner 20 behind it, (20, -20): the segment
     // runs from B's face line x = 0 to that corner.
     const engine::Rectangle a({0, 0}, 40, 40), b({5, 2}, 10, 6);
-    requireInfo(a.collisionTest(b), 20, {1, 0}, {0, -20}, {20, -20});
+    requireInfo("one inside the other", a.collisionTest(b), {20, {1, 0}, {0, -20}, {20, -20}});
 }
 
 TEST_CASE("rectangle collision: two identical rectangles") {
@@ -99,8 +99,8 @@ TEST_CASE("rectangle collision: two identical rectangles") {
     // (0, 1), from (10, 5) - 10 (0, 1) = (10, -5) to (10, 5). The centres are the same,
     // so the pass leaves it as it is.
     const engine::Rectangle a({0, 0}, 20, 10), b({0, 0}, 20, 10);
-    requireInfo(a.collisionTest(b), 10, {0, 1}, {10, -5}, {10, 5});
-    requireInfo(engine::findCollision(a, b), 10, {0, 1}, {10, -5}, {10, 5});
+    requireInfo("two identical rectangles", a.collisionTest(b), {10, {0, 1}, {10, -5}, {10, 5}});
+    requireInfo("two identical rectangles, the pass", engine::findCollision(a, b), {10, {0, 1}, {10, -5}, {10, 5}});
 }
 
 TEST_CASE("rectangle collision: 40,000 random turned pairs agree with the projection SAT") {

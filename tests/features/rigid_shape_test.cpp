@@ -5,6 +5,7 @@
 #include "circle.h"
 #include "near.h"
 #include "rectangle.h"
+#include "shape_text.h"
 
 using engine::Vec2;
 
@@ -42,4 +43,15 @@ TEST_CASE("rigid shape: a circle's reference point starts straight above its cen
     CHECK(ball.radius() == 5);
     requireNear(ball.center(), {10, 20});
     requireNear(ball.startpoint(), {10, 15});
+}
+
+TEST_CASE("rigid shape: a failing check prints shapes and vectors by their numbers, never {?}") {
+    CHECK(Catch::Detail::stringify(Vec2{-0.6, -0.8}) == "(-0.6, -0.8)");
+    const engine::Rectangle box({100, 50}, 40, 20);
+    CHECK(Catch::Detail::stringify(box) == "rectangle 40 x 20 at (100, 50)");
+    const engine::Circle ball({10, 20}, 5);
+    CHECK(Catch::Detail::stringify(ball) == "circle of radius 5 at (10, 20)");
+    // Through the base class too, as a test holding a scene's shapes sees them.
+    const engine::RigidShape& shape = ball;
+    CHECK(Catch::Detail::stringify(shape) == "circle of radius 5 at (10, 20)");
 }

@@ -105,12 +105,13 @@ TEST_CASE("live program: a session's recorded script replays to the last page th
                               " with:\n  ";
     REQUIRE(live.out.rfind(intro, 0) == 0);
     const std::string command = live.out.substr(intro.size(), live.out.size() - intro.size() - 1);
-    CHECK(command == std::string(LIVE_PROGRAM) + " --seed 5 --keys \"$(cat session.keys)\" --frames 8 --every 30" +
+    CHECK(command == std::string(LIVE_PROGRAM) + " --seed 5 --keys \"$(cat session.keys)\" --frames 8 --from 1 --every 30" +
                          (browser::gif_supported() ? " --gif" : ""));
     const Run replay = run_in(folder, command);
     REQUIRE(replay.status == 0);
     const fs::path pictures = folder.path / "out" / "s4_4";
-    CHECK(fs::exists(pictures / "frame_0000.png"));
+    CHECK(fs::exists(pictures / "frame_0001.png"));  // from the first key on
+    CHECK_FALSE(fs::exists(pictures / "frame_0000.png"));
     CHECK(fs::exists(pictures / "animation.gif") == browser::gif_supported());
 
     const Image final_page = browser::read_png(pictures / "final.png");
@@ -118,6 +119,27 @@ TEST_CASE("live program: a session's recorded script replays to the last page th
     REQUIRE(shown.width == final_page.width);
     REQUIRE(shown.height == final_page.height + 24);  // the status line under the page
     CHECK(top_rows(shown, final_page.height).rgba == final_page.rgba);
+}
+
+TEST_CASE("live program: F12 saves the page shown, which the replay draws as that frame") {
+    ScratchFolder folder("live_program");
+    // f before frame 1; paused at refresh 3 with frame 2 shown; F12 saves it; Escape.
+    folder.write("events.txt", "F@1 Space@3 F12@4 Escape@5\n");
+    const Run live = run_in(folder, program() + " --live --record session.keys --live-events events.txt");
+    INFO(live.err);
+    REQUIRE(live.status == 0);
+    CHECK(live.err.empty());
+    CHECK_THAT(live.out, Catch::StartsWith("F12: saved frame 2 to s4_4_frame_0002.png\nrecorded 1 key press in 3 frames"));
+    CHECK(folder.files() == std::vector<std::string>{"events.txt", "s4_4_frame_0002.png", "session.keys"});
+    const std::size_t indent = live.out.find("\n  ");
+    REQUIRE(indent != std::string::npos);
+    const std::string command = live.out.substr(indent + 3, live.out.size() - indent - 4);
+    REQUIRE(run_in(folder, command).status == 0);
+    const Image saved = browser::read_png(folder.path / "s4_4_frame_0002.png");
+    const Image replayed = browser::read_png(folder.path / "out" / "s4_4" / "final.png");
+    CHECK(saved.width == replayed.width);
+    CHECK(saved.height == replayed.height);  // the page, without the window's status line
+    CHECK(saved.rgba == replayed.rgba);
 }
 
 TEST_CASE("live program: the close button ends a session with status 0, and without --record nothing is written") {

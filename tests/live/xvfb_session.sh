@@ -1,25 +1,25 @@
 #!/usr/bin/env bash
 # A live session as a person plays it, on a virtual X display: start the stage with
 # --live --record, press F, G, H and comma on the keyboard (xdotool's XTEST presses,
-# which the X server delivers like real ones), pause with Space, take a screenshot of
-# the window with xwd, end with Escape. Then: the recorded script names those four keys
-# in that order, and the replay command the program printed draws a final.png equal,
-# pixel for pixel, to the page in the screenshot (the window minus its status line).
+# which the X server delivers like real ones), pause with Space, save the page with F12,
+# end with Escape. Then: the recorded script names those four keys in that order, F12
+# saved the page of the last frame shown as s4_4_frame_NNNN.png, and the replay command
+# the program printed draws a final.png equal to it, pixel for pixel.
 #
-# usage: xvfb_session.sh PROGRAM XWD_TO_PNG COMPARE_PNG HAS_WINDOW
+# usage: xvfb_session.sh PROGRAM COMPARE_PNG HAS_WINDOW
 # HAS_WINDOW is "yes" when the build has SDL2's window. Exit status 77 (CTest's
-# "skipped" here) with a message when it has not, or when Xvfb, xdotool or xwd is
-# missing: tools/setup installs libsdl2-dev, xvfb, xdotool and x11-apps.
+# "skipped" here) with a message when it has not, or when Xvfb or xdotool is missing:
+# tools/setup installs libsdl2-dev, xvfb and xdotool.
 set -euo pipefail
-program=$1 xwd_to_png=$2 compare_png=$3 has_window=$4
+program=$1 compare_png=$2 has_window=$3
 
 if [[ "$has_window" != yes ]]; then
   echo "SKIPPED: this build has no live window (SDL2); live.program checks that --live says so"
   exit 77
 fi
-for tool in Xvfb xdotool xwd; do
+for tool in Xvfb xdotool; do
   if ! command -v "$tool" >/dev/null; then
-    echo "SKIPPED: $tool is not installed (tools/setup installs xvfb, xdotool and x11-apps)"
+    echo "SKIPPED: $tool is not installed (tools/setup installs xvfb and xdotool)"
     exit 77
   fi
 done
@@ -54,9 +54,10 @@ window=$(timeout 10 xdotool search --sync --name 's4_4' | head -n 1) || fail "no
 xdotool mousemove --window "$window" 20 20
 xdotool key --delay 100 f g h comma
 sleep 0.3
-xdotool key space   # paused: the page stands still for the screenshot
+xdotool key space   # paused: the page stands still while F12 saves it
+sleep 0.3
+xdotool key F12
 sleep 0.5
-xwd -id "$window" -silent -out shot.xwd
 xdotool key Escape
 for _ in $(seq 100); do kill -0 "$live_pid" 2>/dev/null || break; sleep 0.1; done
 status=0
@@ -72,13 +73,16 @@ for i in 1 2 3; do
   ((frames[i] >= frames[i - 1])) || fail "keys out of order in \"$script\""
 done
 
-# The second line of what the session printed is the replay command.
-command=$(sed -n '2s/^  //p' live_out.txt)
-[[ "$command" == *"--keys \"\$(cat session.keys)\" --frames "* ]] || fail "no replay command printed"
+# What the session printed: "F12: saved frame N to s4_4_frame_NNNN.png", then what it
+# recorded, then the replay command, indented.
+saved=$(sed -n 's/^F12: saved frame \([0-9]*\) to \(s4_4_frame_[0-9]*\.png\)$/\1 \2/p' live_out.txt)
+read -r shown shot <<<"$saved" || true
+[[ -n "${shot:-}" && -f "$shot" ]] || fail "F12 saved no page"
+command=$(sed -n 's/^  //p' live_out.txt)
+[[ "$command" == *"--keys \"\$(cat session.keys)\" --frames $((shown + 1)) --from ${frames[0]} "* ]] ||
+  fail "no replay command ending at the frame F12 saved, from the first key on: $command"
 bash -c "$command" >replay_out.txt 2>&1 || fail "the replay command failed: $command"
 
-# The page is the window's top 450 rows (the book's canvas height); the status line is below.
-"$xwd_to_png" shot.xwd shot.png 450 || fail "cannot read the screenshot"
-"$compare_png" --channel 0 --share 0 out/s4_4/final.png shot.png >compare.txt ||
-  fail "the screenshot differs from the replay's final.png: $(cat compare.txt)"
-echo "the window showed the replay's final.png, pixel for pixel"
+"$compare_png" --channel 0 --share 0 out/s4_4/final.png "$shot" >compare.txt ||
+  fail "the page F12 saved differs from the replay's final.png: $(cat compare.txt)"
+echo "F12 saved the replay's final.png, pixel for pixel"

@@ -13,7 +13,9 @@
 // slips through. Here the tolerance written is the tolerance applied.
 //
 // A failure prints the expected value to 17 digits, the tolerance, and by how much the
-// actual value missed (a Vec2: the actual value itself).
+// actual value missed. Catch prints a Vec2 as "(x, y)" (the StringMaker below), each
+// coordinate in the fewest digits that read back as the same double, as JavaScript
+// prints numbers: (-0.6, -0.8), never {?}.
 
 #include <catch2/catch.hpp>
 
@@ -21,7 +23,23 @@
 #include <sstream>
 #include <string>
 
+#include "number_format.h"
 #include "vec2.h"
+
+namespace Catch {
+template <>
+struct StringMaker<browser::Vec2> {
+    static std::string convert(const browser::Vec2& v) {
+        // Appended piece by piece: g++ 12 warns wrongly about "(" + a temporary string.
+        std::string text = "(";
+        text += browser::to_js_string(v.x);
+        text += ", ";
+        text += browser::to_js_string(v.y);
+        text += ")";
+        return text;
+    }
+};
+}  // namespace Catch
 
 namespace test {
 
@@ -58,20 +76,16 @@ public:
     NearVecMatcher(browser::Vec2 expected, double tolerance) : expected_(expected), tolerance_(tolerance) {}
 
     bool match(const browser::Vec2& actual) const override {
-        actual_ = actual;
         return std::abs(actual.x - expected_.x) <= tolerance_ && std::abs(actual.y - expected_.y) <= tolerance_;
     }
     std::string describe() const override {
-        // (Catch cannot print a Vec2 itself, so the description names the actual value.)
-        return "is within " + detail::exactly(tolerance_) + " of (" + detail::exactly(expected_.x) + ", " +
-               detail::exactly(expected_.y) + ") in each coordinate (it is (" + detail::exactly(actual_.x) + ", " +
-               detail::exactly(actual_.y) + "))";
+        return "is within " + detail::exactly(tolerance_) + " of " + Catch::Detail::stringify(expected_) +
+               " in each coordinate";
     }
 
 private:
     browser::Vec2 expected_;
     double tolerance_;
-    mutable browser::Vec2 actual_;  // the value last matched, for the message
 };
 
 // |actual - expected| <= tolerance.

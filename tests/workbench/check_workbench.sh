@@ -9,6 +9,8 @@
 #     copied in, every test of wb_s3_3 and wb_s4_3 passes, pictures included;
 #   - 1.1 starts from an empty program: the build works, and its tests fail, saying
 #     that they do not build yet, never skipped;
+#   - tools/workbench --check (the reader's loop) stops at the new feature's first failing
+#     check, naming the book project, and passes every check once our files are in;
 #   - tools/workbench --list counts the passing tests.
 # Builds only what the workbench stages need. Used by .ci/run; KEEP=1 keeps the copy.
 set -euo pipefail
@@ -63,6 +65,9 @@ refused "is a path" workbench/3.3
 refused "is a path" 3.3/x
 refused "not a stage number" 3
 refused "not a stage number" "3.3;rm"
+refused "no check \"nothing\"" --check 3.3 nothing
+refused "no workbench/2.2_* yet" --check 2.2
+refused "not a stage number" --check 3
 [[ ! -e workbench ]] || fail "a refusal left workbench/ behind"
 ok "refusals made nothing"
 
@@ -108,6 +113,16 @@ for made in "3.3 ch3_collision/3.3_rectangle_collision rectangle_collision" \
     "$wb.before.log" || fail "$wb.$new's failure does not name book project $number"
   ok "the failure names book project $number ($SECONDS s)"
 
+  echo "== tools/workbench --check $number: the first failing check, and the book project"
+  SECONDS=0
+  status=0
+  tools/workbench --check "$number" >"$wb.check.log" 2>&1 || status=$?
+  [[ $status -eq 1 ]] || fail "--check $number exited with $status, not 1 (log: $wb.check.log)"
+  grep -q "^FAIL  $wb.$new" "$wb.check.log" || fail "--check $number does not stop at $new first (log: $wb.check.log)"
+  tail -n 1 "$wb.check.log" | grep -q "^  it comes from book project $number, " ||
+    fail "--check $number's last line does not name book project $number (log: $wb.check.log)"
+  ok "--check $number stops at $new and names book project $number ($SECONDS s)"
+
   echo "== $wb with our $number files copied in: every test passes, pictures included"
   SECONDS=0
   find "$ours" -maxdepth 1 -type f ! -name README.md -exec cp {} "$folder"/ \;
@@ -116,6 +131,10 @@ for made in "3.3 ch3_collision/3.3_rectangle_collision rectangle_collision" \
     ${overlay_feature:+"$wb.$overlay_feature"} "$wb.stage" "$wb.pictures"
   grep -q "100% tests passed" "$wb.after.log" || fail "$wb: not every test passed (log: $wb.after.log)"
   ok "all of $wb's tests pass ($SECONDS s)"
+  tools/workbench --check "$number" >"$wb.check.log" 2>&1 || fail "--check $number fails with our files (log: $wb.check.log)"
+  tail -n 1 "$wb.check.log" | grep -qx "every check of your $number passes, pictures included" ||
+    fail "--check $number does not say every check passes (log: $wb.check.log)"
+  ok "--check $number passes every check"
 done
 
 echo "== wb_s1_1 from an empty program: builds, and its tests fail, not skipped"
