@@ -73,6 +73,19 @@ double frictionImpulse(double sliding, double response, double jN, double restit
     return std::min(jT, jN);  // friction never pushes harder than the collision itself
 }
 
+// The unit tangent against the sliding part of `velocity`: what is left of it off the
+// normal. A head-on hit leaves nothing there but rounding noise, some 1e-16 of the
+// speed, in any direction; normalized, it would become a whole unit vector, and
+// friction would push along it, even along the normal (docs/errata.md, "Friction from
+// rounding noise"). Sliding under 1e-9 of the speed is no sliding: no tangent.
+constexpr double kNoSliding = 1e-9;
+
+Vec2 againstTheSliding(Vec2 velocity, Vec2 normal) {
+    const Vec2 sliding = velocity - normal * velocity.dot(normal);
+    if (sliding.length() <= kNoSliding * velocity.length()) return {};
+    return sliding.normalize() * -1;
+}
+
 // What a collision does to the pair: push them apart, then change their velocities by
 // the impulse method, with rotation (Equations 4 to 6). Along the normal, the impulse
 // jN makes the contact points separate at e times the speed they met with (Newton's
@@ -116,7 +129,7 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
         const Vec2 sliding_velocity = world.friction_model == FrictionModel::coulomb
                                           ? velocityAt(b, arms.b) - velocityAt(a, arms.a)
                                           : relative_velocity;
-        const Vec2 tangent = (sliding_velocity - normal * sliding_velocity.dot(normal)).normalize() * -1;
+        const Vec2 tangent = againstTheSliding(sliding_velocity, normal);
         const double jT = frictionImpulse(sliding_velocity.dot(tangent), impulseResponse(a, b, arms, tangent), jN,
                                           restitution, friction, world.friction_model);
         applyImpulse(a, b, arms, tangent * jT);
