@@ -5,6 +5,6 @@ namespace bench {
 
 bool box2d_available() { return false; }
 std::string box2d_version() { return "no Box2D"; }
-std::unique_ptr<BenchWorld> box2d_world(const SceneDescription&) { return nullptr; }
+std::unique_ptr<BenchWorld> box2d_world(const SceneDescription&, bool) { return nullptr; }
 
 }  // namespace bench

@@ -34,10 +34,10 @@ double area_m2(const browser::BodyDescription& body) {
 
 class Box2dWorld final : public BenchWorld {
 public:
-    explicit Box2dWorld(const SceneDescription& scene)
+    Box2dWorld(const SceneDescription& scene, bool sleeping)
         : world_(metres(scene.world.gravity)), dt_(static_cast<float>(scene.world.dt)), descriptions_(scene.bodies) {
         world_.SetContinuousPhysics(false);
-        world_.SetAllowSleeping(false);
+        world_.SetAllowSleeping(sleeping);
         // Box2D makes contacts slower than this inelastic, so that resting bodies stop
         // bouncing; with no gravity nothing rests, and every collision should bounce.
         const bool resting_possible = scene.world.gravity != Vec2{};
@@ -118,8 +118,8 @@ std::string box2d_version() {
     return name.append(std::to_string(b2_version.major)).append(".").append(std::to_string(b2_version.minor));
 }
 
-std::unique_ptr<BenchWorld> box2d_world(const SceneDescription& scene) {
-    return std::make_unique<Box2dWorld>(scene);
+std::unique_ptr<BenchWorld> box2d_world(const SceneDescription& scene, bool sleeping) {
+    return std::make_unique<Box2dWorld>(scene, sleeping);
 }
 
 }  // namespace bench

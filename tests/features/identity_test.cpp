@@ -108,7 +108,10 @@ std::vector<std::string> allScenes() {
 TEST_CASE("identity: every shipped scene moves as the book's 5.1 moved it, to the last bit", "[identity]") {
     REQUIRE(kRecorded.size() == allScenes().size());  // a new scene needs its fingerprint
     for (const Recorded& recorded : kRecorded) {
-        const engine::Scene scene = engine::loadScene(sceneFile(recorded.scene));
+        engine::Scene scene = engine::loadScene(sceneFile(recorded.scene));
+#if __has_include("islands.h")
+        scene.world.sleep = false;  // 5.5: a sleeping shape skips its steps; awake, all is as in 5.1
+#endif
 #if __has_include("broad_phase.h")
         for (engine::BroadPhaseKind kind : {engine::BroadPhaseKind::bounding_circle, engine::BroadPhaseKind::grid,
                                             engine::BroadPhaseKind::all_pairs}) {

@@ -72,6 +72,9 @@ const std::map<std::string, std::string> kEveryWorldKey{
     {"gravity", "[0, 5]"},
     {"dt", "0.01"},
     {"movement", "true"},
+    {"sleep", "false"},
+    {"sleep_speed", "1.5"},
+    {"time_to_sleep", "0.25"},
     {"relaxation_iterations", "3"},
     {"correction_rate", "0.5"},
     {"positional_correction", "false"},
@@ -113,6 +116,11 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
               "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
               "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
               "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop"}},
+    {"s5_5", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
+              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
+              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
+              "sleep_speed", "time_to_sleep"}},
 };
 
 std::string commaList(const std::vector<std::string>& words) {

@@ -24,6 +24,9 @@ inline engine::WorldSettings world(bool movement, Vec2 gravity = engine::kGravit
     engine::WorldSettings settings = engine::kBookWorld;
     settings.movement = movement;
     settings.gravity = gravity;
+#if __has_include("islands.h")
+    settings.sleep = false;  // 5.5: chapter 4's world never sleeps
+#endif
     return settings;
 }
 

@@ -1,0 +1,159 @@
+// The study of 5.5's sleeping (ch5_demo/5.5_sleeping/README.md): the rain of 1000
+// (bench/scenes/rain_1000.json) on both of 5.5's solvers, with sleep on and off, and on
+// Box2D 2.4 with its own sleeping, one run each. For every half second of simulated
+// time it writes the cost of a step and the share of the shapes asleep to
+// bench/results/sleep_rain_1000.csv, draws the cost against simulated time
+// (sleep_rain_1000.png), and prints the figures the README quotes: when the last shape
+// landed (the first step from which every moving shape touches something), the share
+// asleep 4 s later, and the cost of a settled step, sleep on against sleep off.
+//
+//   build/sleep_study [SECONDS]    (default 20 s of simulated time)
+//
+// Linked with stage 5.5's engine alone (namespace engine), beside the bench's library
+// for Box2D (whose stage engines live in their own namespaces, CMakeLists.txt).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "box2d_world.h"
+#include "browser.h"
+#include "charts.h"
+#include "core.h"
+#include "scene_io.h"
+#include "scene_json.h"
+
+namespace {
+
+constexpr int kWindowSteps = 30;  // half a second at the rain's 60 steps a second
+
+struct Window {
+    double end_s;         // simulated time at the window's end
+    double us_per_step;   // wall clock
+    double asleep_share;  // of the moving shapes, at the window's end
+};
+
+struct Run {
+    std::string name;
+    std::vector<Window> windows;
+    double landed_s = -1.0;  // every moving shape touching something from here on
+};
+
+std::size_t movingCount(const engine::Core& core) {
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < core.objectCount(); ++i) moving += core.object(i).isStatic() ? 0 : 1;
+    return moving;
+}
+
+bool allHeld(const engine::Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const engine::RigidShape& shape = core.object(i);
+        if (!shape.isStatic() && !shape.sleep().asleep && !shape.sleep().held) return false;
+    }
+    return true;
+}
+
+Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, int windows) {
+    engine::WorldSettings world = scene.world;
+    world.solver = solver;
+    world.sleep = sleep;
+    browser::Window window(world.dt * 1000.0,
+                           browser::Document{browser::Canvas(static_cast<int>(std::ceil(world.width)),
+                                                             static_cast<int>(std::ceil(world.height)))});
+    engine::Core core(window, world);
+    engine::buildScene(core, scene.bodies);
+    Run run{.name = std::string(solver == engine::SolverKind::book ? "5.5 book's passes" : "5.5 sequential impulse") +
+                    (sleep ? ", sleep on" : ", sleep off")};
+    const double moving = static_cast<double>(movingCount(core));
+    for (int w = 0; w < windows; ++w) {
+        const auto start = std::chrono::steady_clock::now();
+        for (int step = 0; step < kWindowSteps; ++step) {
+            core.update();
+            // Held is only kept while sleep is on; a run with sleep off has no landing time.
+            if (sleep && run.landed_s < 0 && allHeld(core)) run.landed_s = static_cast<double>(core.stepCount()) * world.dt;
+            if (sleep && run.landed_s >= 0 && !allHeld(core)) run.landed_s = -1.0;
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double asleep = moving - static_cast<double>(core.awakeCount());
+        run.windows.push_back({.end_s = static_cast<double>(core.stepCount()) * world.dt,
+                               .us_per_step = seconds * 1e6 / kWindowSteps,
+                               .asleep_share = asleep / moving});
+    }
+    return run;
+}
+
+Run runBox2d(const bench::SceneDescription& scene, int windows) {
+    Run run{.name = bench::box2d_version() + ", sleeping on"};
+    const std::unique_ptr<bench::BenchWorld> world = bench::box2d_world(scene, true);
+    if (!world) return run;
+    for (int w = 0; w < windows; ++w) {
+        const double before = world->seconds();
+        world->run(kWindowSteps);
+        run.windows.push_back({.end_s = (w + 1) * kWindowSteps * scene.world.dt,
+                               .us_per_step = (world->seconds() - before) * 1e6 / kWindowSteps,
+                               .asleep_share = std::nan("")});
+    }
+    return run;
+}
+
+// The mean cost of a step over the last `count` windows: the settled rain.
+double settledCost(const Run& run, std::size_t count) {
+    double sum = 0.0;
+    for (std::size_t k = run.windows.size() - count; k < run.windows.size(); ++k) sum += run.windows[k].us_per_step;
+    return sum / static_cast<double>(count);
+}
+
+double asleepAt(const Run& run, double time_s) {
+    for (const Window& window : run.windows) {
+        if (window.end_s >= time_s - 1e-9) return window.asleep_share;
+    }
+    return std::nan("");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const double seconds = argc > 1 ? std::stod(argv[1]) : 20.0;
+    const int windows = static_cast<int>(std::lround(seconds * 60.0 / kWindowSteps));
+    const std::filesystem::path scene_file = std::filesystem::path(BENCH_SCENES_DIR) / "rain_1000.json";
+    const engine::Scene scene = engine::loadScene(scene_file);
+
+    std::vector<Run> runs;
+    for (engine::SolverKind solver : {engine::SolverKind::book, engine::SolverKind::sequential_impulse}) {
+        runs.push_back(runStage(scene, solver, true, windows));
+        runs.push_back(runStage(scene, solver, false, windows));
+    }
+    if (bench::box2d_available()) runs.push_back(runBox2d(bench::read_scene(scene_file), windows));
+
+    const std::filesystem::path results(BENCH_RESULTS_DIR);
+    std::ofstream csv(results / "sleep_rain_1000.csv");
+    csv << "engine,simulated_s,us_per_step,asleep_share\n";
+    bench::Chart chart{.title = "rain of 1000: the cost of a step as the rain settles",
+                       .x_label = "simulated time (s)",
+                       .y_label = "cost (us per step)",
+                       .log_y = true};
+    for (const Run& run : runs) {
+        bench::Series series{.name = run.name, .joined = true};
+        for (const Window& window : run.windows) {
+            csv << run.name << ',' << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share << '\n';
+            series.points.push_back({window.end_s, window.us_per_step, ""});
+        }
+        chart.series.push_back(series);
+    }
+    bench::write_chart(chart, results / "sleep_rain_1000.png");
+
+    const std::size_t settled = std::min<std::size_t>(4, static_cast<std::size_t>(windows));
+    for (std::size_t k = 0; k + 1 < runs.size() && k < 4; k += 2) {
+        const Run& on = runs[k];
+        const Run& off = runs[k + 1];
+        std::printf("%s: last landing at %.2f s; asleep 4 s later: %.1f %%; at the end: %.1f %%\n", on.name.c_str(),
+                    on.landed_s, 100.0 * asleepAt(on, on.landed_s + 4.0), 100.0 * on.windows.back().asleep_share);
+        std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n", settledCost(on, settled),
+                    settledCost(off, settled), 100.0 * settledCost(on, settled) / settledCost(off, settled));
+    }
+    if (runs.size() == 5) std::printf("%s: settled step (last 2 s): %.1f us\n", runs[4].name.c_str(), settledCost(runs[4], settled));
+    return 0;
+}

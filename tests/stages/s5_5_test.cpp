@@ -1,0 +1,521 @@
+// Stage 5.5: islands and sleeping (islands.h). Each wake rule has a test named after it;
+// so has each failure the sleep rule is there to avoid (a ball asleep at the top of its
+// arc, a shape asleep while it overlaps, a box asleep mid-tip, a pile left hanging when
+// its floor goes). With sleep off the stage is 5.4 bit for bit (the identity feature
+// test); with sleep on, every step is 5.4's up to the first in which a shape sleeps.
+// 5.4's own tests run on this stage too, sleep on (s5_5.s5_4_stage).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "circle.h"
+#include "near.h"
+#include "rectangle.h"
+#include "scene_io.h"
+#include "world_fixture.h"
+#include "world_from_scene.h"
+
+using engine::Vec2;
+using engine::WorldSettings;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kStepsPerSecond = 60;
+constexpr double kFloorTop = 420.0;  // px: the floor below spans y 420 to 440
+constexpr engine::SolverKind kBothSolvers[] = {engine::SolverKind::book, engine::SolverKind::sequential_impulse};
+
+WorldSettings sleepyWorld(engine::SolverKind solver) {
+    WorldSettings world = engine::kBookWorld;
+    world.solver = solver;
+    return world;
+}
+
+struct Sleepy {
+    explicit Sleepy(engine::SolverKind solver = engine::SolverKind::book) : page(sleepyWorld(solver)) {}
+    explicit Sleepy(const WorldSettings& world) : page(world) {}
+
+    engine::Rectangle& floor() { return page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0})); }
+    // A 40 x 40 box whose bottom is at `bottom`, its centre at x.
+    engine::Rectangle& box(double x, double bottom = kFloorTop) {
+        return page.core.add(engine::Rectangle({x, bottom - 20}, 40, 40));
+    }
+    bool asleep(std::size_t i) const { return page.core.object(i).sleep().asleep; }
+    std::uint64_t island(std::size_t i) const { return page.core.object(i).sleep().island; }
+    bool allAsleep() const { return page.core.awakeCount() == 0; }
+    // Steps until every moving shape sleeps; false if that takes more than `seconds`.
+    bool stepUntilAllAsleep(int seconds = 10) {
+        for (int step = 0; step < seconds * kStepsPerSecond; ++step) {
+            page.steps(1);
+            if (allAsleep()) return true;
+        }
+        return false;
+    }
+    test::WorldFixture page;
+};
+
+// Two boxes far apart on one floor (objects 1 and 2) and a stack of two (3 under 4).
+struct TwoIslands : Sleepy {
+    explicit TwoIslands(engine::SolverKind solver = engine::SolverKind::book) : Sleepy(solver) {
+        floor();
+        box(150);
+        box(650);
+        box(400);
+        box(400, kFloorTop - 40);
+    }
+};
+
+// Every number the state dump writes, bit for bit.
+bool sameState(const engine::Core& a, const engine::Core& b) {
+    if (a.objectCount() != b.objectCount()) return false;
+    for (std::size_t i = 0; i < a.objectCount(); ++i) {
+        const engine::RigidShape& x = a.object(i);
+        const engine::RigidShape& y = b.object(i);
+        const double xs[] = {x.center().x, x.center().y, x.angle(), x.velocity().x, x.velocity().y, x.angularVelocity()};
+        const double ys[] = {y.center().x, y.center().y, y.angle(), y.velocity().x, y.velocity().y, y.angularVelocity()};
+        for (int k = 0; k < 6; ++k) {
+            if (std::bit_cast<std::uint64_t>(xs[k]) != std::bit_cast<std::uint64_t>(ys[k])) return false;
+        }
+    }
+    return true;
+}
+
+// A copy of every shape of `from`, as it is (vertices, velocities, sleep state), into `to`.
+void copyShapes(const engine::Core& from, engine::Core& to) {
+    for (std::size_t i = 0; i < from.objectCount(); ++i) {
+        const engine::RigidShape& shape = from.object(i);
+        if (shape.type() == engine::ShapeType::Circle) {
+            to.add(static_cast<const engine::Circle&>(shape));
+        } else {
+            to.add(static_cast<const engine::Rectangle&>(shape));
+        }
+    }
+}
+
+engine::Scene sceneFile(const fs::path& file, engine::SolverKind solver) {
+    engine::Scene scene = engine::loadScene(file);
+    scene.world.solver = solver;
+    return scene;
+}
+
+}  // namespace
+
+// =================================================================================
+// The knobs, and 5.4 until the first sleep
+
+TEST_CASE("s5_5: sleep is on unless the scene turns it off, and its knobs are read") {
+    CHECK(engine::kBookWorld.sleep);
+    const WorldSettings world = test::worldFromScene(R"({"sleep": false, "sleep_speed": 3.5, "time_to_sleep": 1.25})");
+    CHECK_FALSE(world.sleep);
+    CHECK(world.sleep_speed == 3.5);
+    CHECK(world.time_to_sleep == 1.25);
+}
+
+TEST_CASE("s5_5: with sleep on, every step is 5.4's (sleep off) up to the first in which a shape sleeps") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        for (const char* name : {"pyramid.json", "heavy_on_light.json", "rain.json"}) {
+            INFO(name << ", solver " << static_cast<int>(solver));
+            const engine::Scene scene = sceneFile(fs::path(SCENE_LIBRARY_DIR) / name, solver);
+            Sleepy on(scene.world);
+            WorldSettings off_world = scene.world;
+            off_world.sleep = false;
+            Sleepy off(off_world);
+            engine::buildScene(on.page.core, scene.bodies);
+            engine::buildScene(off.page.core, scene.bodies);
+            int first_sleep = -1;
+            for (int step = 1; step <= 60 * kStepsPerSecond && first_sleep < 0; ++step) {
+                on.page.steps(1);
+                off.page.steps(1);
+                if (on.page.core.awakeCount() < off.page.core.awakeCount()) {
+                    first_sleep = step;
+                } else {
+                    REQUIRE(sameState(on.page.core, off.page.core));
+                }
+            }
+            CHECK(first_sleep > 0);  // the scene does come to rest, so the test saw something
+        }
+    }
+}
+
+// =================================================================================
+// The sleep rule and the islands
+
+TEST_CASE("s5_5: a box at rest on the floor sleeps after time_to_sleep, and then skips its steps") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        Sleepy world(solver);
+        world.floor();
+        world.box(400);
+        // It lands at rest at once (its bottom is on the floor's face, and it touches it
+        // from the second step): half a second of 1/60 s steps is 30 of them, give or
+        // take a step for the rounding of 30 additions of 1/60.
+        world.page.steps(29);
+        CHECK_FALSE(world.asleep(1));
+        world.page.steps(3);
+        REQUIRE(world.asleep(1));
+        const engine::Rectangle asleep = static_cast<const engine::Rectangle&>(world.page.core.object(1));
+        CHECK(asleep.velocity() == Vec2{});
+        CHECK(asleep.angularVelocity() == 0.0);
+        world.page.steps(10 * kStepsPerSecond);
+        CHECK(world.page.core.object(1).center() == asleep.center());  // not a bit has moved
+        CHECK(world.page.core.object(1).angle() == asleep.angle());
+        CHECK(world.asleep(1));
+    }
+}
+
+TEST_CASE("s5_5: the rest timer starts again from 0 when a shape moves") {
+    Sleepy world;
+    world.floor();
+    world.box(400);
+    world.page.steps(20);
+    CHECK(world.page.core.object(1).sleep().rested_s > 0.25);
+    world.page.core.object(1).setVelocity({0, -50});  // thrown up, by no key
+    world.page.steps(1);
+    CHECK(world.page.core.object(1).sleep().rested_s == 0.0);
+}
+
+TEST_CASE("s5_5: an island sleeps only when every shape in it has rested for time_to_sleep") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        // A box at rest on the floor, and a ball 1 px above it that lands on it after
+        // sqrt(2 * 1 / 20) = 0.32 s, some 19 steps in: the box has then rested for 0.3 s,
+        // the ball not at all.
+        Sleepy world(solver);
+        world.floor();
+        world.box(400);
+        world.page.core.add(engine::Circle({400, kFloorTop - 40 - 10 - 1}, 10));
+        int landed = -1, asleep = -1;
+        for (int step = 1; step <= 5 * kStepsPerSecond && asleep < 0; ++step) {
+            world.page.steps(1);
+            if (landed < 0 && world.page.core.object(2).sleep().held) landed = step;
+            if (world.asleep(1)) asleep = step;
+        }
+        REQUIRE(landed > 0);
+        REQUIRE(asleep > 0);
+        CHECK(world.asleep(2));  // the two fall asleep together
+        CHECK(asleep - landed >= 29);
+    }
+}
+
+TEST_CASE("s5_5: islands join shapes through touching contacts, never through a static shape") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        TwoIslands world(solver);
+        REQUIRE(world.stepUntilAllAsleep());
+        CHECK(world.island(3) == world.island(4));  // the stack: one island
+        CHECK(world.island(1) != world.island(2));  // the lone boxes share the floor only
+        CHECK(world.island(1) != world.island(3));
+        CHECK(world.island(2) != world.island(3));
+    }
+}
+
+// =================================================================================
+// The wake rules
+
+TEST_CASE("s5_5: wake rule: an awake shape that starts touching a sleeping one wakes its island, and only that") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        TwoIslands world(solver);
+        REQUIRE(world.stepUntilAllAsleep());
+        // A ball dropped on the stack from 1 px above it.
+        world.page.core.add(engine::Circle({400, kFloorTop - 80 - 10 - 1}, 10));
+        bool touched = false;
+        for (int step = 0; step < kStepsPerSecond && !touched; ++step) {
+            world.page.steps(1);
+            touched = !world.page.core.physics().collisions().empty() ||
+                      world.page.core.physics().contactSolver().pointCount() > 0;
+        }
+        REQUIRE(touched);
+        CHECK_FALSE(world.asleep(3));
+        CHECK_FALSE(world.asleep(4));
+        CHECK(world.asleep(1));
+        CHECK(world.asleep(2));
+    }
+}
+
+TEST_CASE("s5_5: wake rule: a shape removed out of the canvas wakes its island") {
+    TwoIslands world;
+    REQUIRE(world.stepUntilAllAsleep());
+    world.page.core.object(3).move({0, 1000});  // the bottom of the stack, out of the canvas
+    world.page.steps(1);
+    REQUIRE(world.page.core.objectCount() == 4);  // the top box is object 3 now
+    CHECK_FALSE(world.asleep(3));
+    CHECK(world.asleep(1));
+    CHECK(world.asleep(2));
+}
+
+TEST_CASE("s5_5: wake rule: R removes shapes and wakes the islands they touched") {
+    // The first seven objects stay: a floor and six boxes on it, each its own island;
+    // the eighth lies on the sixth.
+    Sleepy world;
+    world.floor();
+    for (int i = 0; i < 6; ++i) world.box(60 + 130 * i);
+    world.box(60 + 130 * 5, kFloorTop - 40);
+    REQUIRE(world.stepUntilAllAsleep());
+    world.page.press(browser::Key::R);
+    REQUIRE(world.page.core.objectCount() == 7);
+    CHECK_FALSE(world.asleep(6));
+    for (std::size_t i = 1; i <= 5; ++i) CHECK(world.asleep(i));
+}
+
+TEST_CASE("s5_5: wake rule: removing the floor under a sleeping pile wakes it all within one step, and it falls as with sleep off") {
+    // The book's solver: a pile of three boxes and a ball on a floor.
+    Sleepy on;
+    on.floor();
+    on.box(380);
+    on.box(420);
+    on.box(400, kFloorTop - 40);
+    on.page.core.add(engine::Circle({400, kFloorTop - 80 - 10}, 10));
+    REQUIRE(on.stepUntilAllAsleep());
+    on.page.core.object(0).move({0, 1000});  // the floor, out of the canvas
+    on.page.steps(1);
+    REQUIRE(on.page.core.objectCount() == 4);
+    CHECK(on.page.core.awakeCount() == 4);
+    // From here the pile must fall exactly as the same pile does with sleep off.
+    WorldSettings off_world = on.page.core.settings();
+    off_world.sleep = false;
+    Sleepy off(off_world);
+    copyShapes(on.page.core, off.page.core);
+    for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
+        on.page.steps(1);
+        off.page.steps(1);
+        INFO("step " << step);
+        REQUIRE(sameState(on.page.core, off.page.core));
+    }
+    CHECK(on.page.core.objectCount() < 4);  // it has fallen off the canvas, as it should
+}
+
+TEST_CASE("s5_5: wake rule: every key that moves, turns, pushes or changes a shape wakes it and its island") {
+    using browser::Key;
+    for (Key key : {Key::W, Key::A, Key::S, Key::D, Key::Q, Key::E, Key::I, Key::J, Key::K, Key::L, Key::U, Key::O,
+                    Key::Z, Key::X, Key::C, Key::V, Key::B, Key::N, Key::F, Key::G}) {
+        INFO("key " << browser::key_name(key));
+        TwoIslands world;
+        REQUIRE(world.stepUntilAllAsleep());
+        world.page.core.select(4);  // the top of the stack
+        world.page.press(key);
+        CHECK_FALSE(world.asleep(3));
+        CHECK_FALSE(world.asleep(4));
+        CHECK(world.asleep(1));
+        CHECK(world.asleep(2));
+    }
+}
+
+TEST_CASE("s5_5: wake rule: a key on a static shape wakes everything; selecting wakes nothing") {
+    TwoIslands world;
+    REQUIRE(world.stepUntilAllAsleep());
+    world.page.press(browser::Key::Down);
+    world.page.press(browser::Key::Digit2);
+    CHECK(world.allAsleep());
+    world.page.core.select(0);  // the floor
+    world.page.press(browser::Key::S);
+    CHECK(world.page.core.awakeCount() == 4);
+}
+
+TEST_CASE("s5_5: wake rule: H wakes everything") {
+    TwoIslands world;
+    REQUIRE(world.stepUntilAllAsleep());
+    world.page.press(browser::Key::H);
+    CHECK(world.page.core.awakeCount() == 4);
+}
+
+TEST_CASE("s5_5: wake rule: a change of gravity or of any world setting wakes everything") {
+    SECTION("gravity") {
+        TwoIslands world;
+        REQUIRE(world.stepUntilAllAsleep());
+        WorldSettings changed = world.page.core.settings();
+        changed.gravity = {5, 20};
+        world.page.core.changeSettings(changed);
+        CHECK(world.page.core.awakeCount() == 4);
+    }
+    SECTION("the same settings again wake nothing") {
+        TwoIslands world;
+        REQUIRE(world.stepUntilAllAsleep());
+        world.page.core.changeSettings(world.page.core.settings());
+        CHECK(world.allAsleep());
+    }
+    for (browser::Key key : {browser::Key::Comma, browser::Key::M, browser::Key::Y}) {
+        INFO("key " << browser::key_name(key));
+        TwoIslands world;
+        REQUIRE(world.stepUntilAllAsleep());
+        world.page.press(key);
+        CHECK(world.page.core.awakeCount() == 4);
+    }
+}
+
+TEST_CASE("s5_5: Y turns sleeping off and on live; off, nothing falls asleep") {
+    TwoIslands world;
+    world.page.press(browser::Key::Y);
+    CHECK_FALSE(world.page.core.settings().sleep);
+    CHECK_FALSE(world.stepUntilAllAsleep(5));
+    CHECK(world.page.core.awakeCount() == 4);
+    world.page.press(browser::Key::Y);
+    CHECK(world.stepUntilAllAsleep(5));
+}
+
+// =================================================================================
+// What must not sleep
+
+namespace {
+
+// `count` circles of radius 2 in a row 20 px apart, thrown straight up from y = 1000 at
+// speeds spread evenly over (0, top_speed], with no floor and nothing to leave the
+// canvas by. Returns how many were ever asleep over `seconds`.
+int thrownUpAsleep(int count, double top_speed, Vec2 gravity, double seconds) {
+    WorldSettings world = engine::kBookWorld;
+    world.gravity = gravity;
+    world.width = 20.0 * (count + 1);
+    world.height = 2000.0;
+    world.remove_out_of_bounds = false;
+    Sleepy run(world);
+    for (int i = 0; i < count; ++i) {
+        run.page.core.add(engine::Circle({20.0 * (i + 1), 1000}, 2)).setVelocity({0, -top_speed * (i + 1) / count});
+    }
+    std::vector<bool> slept(static_cast<std::size_t>(count), false);
+    for (int step = 0; step < seconds * kStepsPerSecond; ++step) {
+        run.page.steps(1);
+        for (int i = 0; i < count; ++i) slept[static_cast<std::size_t>(i)] = slept[static_cast<std::size_t>(i)] || run.asleep(static_cast<std::size_t>(i));
+    }
+    return static_cast<int>(std::count(slept.begin(), slept.end(), true));
+}
+
+}  // namespace
+
+TEST_CASE("s5_5: 0 of 1000 shapes thrown straight up sleep, in the air, at the top of the arc or anywhere else") {
+    // Under the demo's gravity, 20 px/s^2: the slowest is thrown at 0.3 px/s, the fastest
+    // at 300 px/s, whose arc tops out after 15 s.
+    CHECK(thrownUpAsleep(1000, 300.0, {0, 20}, 16.0) == 0);
+    // Under a gravity of 2 px/s^2 a shape stays under 2 px/s for 2 s about the top of
+    // its arc, four times the time to sleep: only the rule that a shape in the air is
+    // falling keeps it awake.
+    CHECK(thrownUpAsleep(1000, 10.0, {0, 2}, 8.0) == 0);
+}
+
+TEST_CASE("s5_5: a shape that spins in place does not sleep; one that floats still does") {
+    // No gravity: a circle of radius 20 spinning at 0.5 rad/s moves its rim at 10 px/s,
+    // though its centre stands still.
+    WorldSettings world = engine::kBookWorld;
+    world.gravity = {};
+    Sleepy run(world);
+    run.page.core.add(engine::Circle({200, 200}, 20)).setAngularVelocity(0.5);
+    run.page.core.add(engine::Circle({500, 200}, 20));
+    run.page.steps(5 * kStepsPerSecond);
+    CHECK_FALSE(run.asleep(0));
+    CHECK(run.asleep(1));
+}
+
+TEST_CASE("s5_5: no shape sleeps while it overlaps another by more than the slop") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        // A box sunk 3 px into the floor, with nothing to push it out (M: no correction).
+        Sleepy world(solver);
+        world.floor();
+        world.box(400, kFloorTop + 3);
+        world.page.press(browser::Key::M);
+        world.page.steps(5 * kStepsPerSecond);
+        CHECK_FALSE(world.asleep(1));
+        // With the correction back on it is pushed out, and then sleeps.
+        world.page.press(browser::Key::M);
+        CHECK(world.stepUntilAllAsleep(5));
+    }
+}
+
+TEST_CASE("s5_5: a box tipping slowly over an edge does not sleep mid-tip") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        // A platform whose right edge is at x = 300, its top at y = 290; a 40 x 40 box on
+        // it at rest, its centre 5 px past the edge. Gravity's torque about the corner
+        // tips it from rest, slowly at first: its corner turns at g d / (I / m) =
+        // 20 * 5 / (3200 / 12 + 800) = 0.094 rad/s^2.
+        Sleepy world(solver);
+        world.page.core.add(engine::Rectangle({200, 300}, 200, 20, {.mass = 0}));
+        world.box(305, 290);
+        bool fell = false;
+        for (int step = 0; step < 10 * kStepsPerSecond && !fell; ++step) {
+            world.page.steps(1);
+            REQUIRE_FALSE(world.asleep(1));
+            fell = world.page.core.object(1).center().y > 340;  // well below the platform
+        }
+        CHECK(fell);
+    }
+}
+
+TEST_CASE("s5_5: a box that starts to slide slowly down a slope from rest does not sleep") {
+    // A slope of 20 degrees, mu 0.3 (Coulomb): it slides at g (sin a - mu cos a) =
+    // 1.2 px/s^2, so it stays under the sleep speed for 2.5 s, five times the time to
+    // sleep; but it drifts past the slop within 0.5 s.
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        WorldSettings world = sleepyWorld(solver);
+        world.friction_model = engine::FrictionModel::coulomb;
+        Sleepy run(world);
+        const double slope = 20.0 * 3.14159265358979 / 180.0;
+        engine::Rectangle& ramp = run.page.core.add(engine::Rectangle({400, 300}, 700, 20, {.mass = 0, .friction = 0.3}));
+        ramp.rotate(slope);
+        // The box sits on the ramp's top face, turned with it.
+        const Vec2 normal{std::sin(slope), -std::cos(slope)};
+        engine::Rectangle& box = run.page.core.add(engine::Rectangle(Vec2{400, 300} + normal * 30.0, 40, 40, {.friction = 0.3}));
+        box.rotate(slope);
+        for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
+            run.page.steps(1);
+            REQUIRE_FALSE(run.asleep(1));
+        }
+        CHECK(box.center().distance(Vec2{400, 300} + normal * 30.0) > 3.0);  // it did slide
+    }
+}
+
+TEST_CASE("s5_5: pyramid_20 and heavy_on_light stand with sleep on, and fall asleep") {
+    for (const char* name : {"pyramid_20.json", "heavy_on_light.json"}) {
+        INFO(name);
+        const engine::Scene scene = sceneFile(fs::path(BENCH_SCENES_DIR) / name, engine::SolverKind::sequential_impulse);
+        REQUIRE(scene.world.sleep);
+        Sleepy run(scene.world);
+        engine::buildScene(run.page.core, scene.bodies);
+        const std::size_t top = run.page.core.objectCount() - 1;
+        run.page.steps(kStepsPerSecond);
+        const Vec2 start = run.page.core.object(top).center();
+        REQUIRE(run.stepUntilAllAsleep(20));
+        run.page.steps(30 * kStepsPerSecond);
+        CHECK(run.allAsleep());
+        CHECK(run.page.core.object(top).center().distance(start) < 0.5);
+    }
+}
+
+// =================================================================================
+// Seeing it
+
+TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sleeping shapes are drawn gray") {
+    TwoIslands world;
+    REQUIRE(world.stepUntilAllAsleep());
+    world.page.core.select(0);
+    world.page.core.runGameLoop();
+    const std::string& echo = world.page.window.document.ui_echo;
+    CHECK(echo.find("  Sleeping: true, awake 0/4\n") != std::string::npos);
+    // The lone box at x = 150: its left side, x = 130, drawn gray from y 380 to 420.
+    const browser::Image& image = world.page.window.document.canvas.pixels();
+    const auto pixel = [&](int x, int y) {
+        const std::size_t at = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                    static_cast<std::size_t>(x));
+        return browser::Color{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
+    };
+    // Lines are drawn smooth, so the outline's pixels are shades: gray ones have equal
+    // red, green and blue; blue ones more blue than red.
+    int gray = 0, blue = 0;
+    for (int x = 126; x <= 134; ++x) {
+        const browser::Color color = pixel(x, 400);
+        gray += color.r == color.g && color.g == color.b && color.r < 200;
+        blue += color.b > color.r + 50;
+    }
+    CHECK(gray > 0);
+    CHECK(blue == 0);
+    world.page.press(browser::Key::H);
+    world.page.core.runGameLoop();
+    CHECK(world.page.window.document.ui_echo.find("  Sleeping: true, awake 4/4\n") != std::string::npos);
+}
