@@ -7,7 +7,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -18,6 +17,7 @@
 #include "circle.h"
 #include "near.h"
 #include "rectangle.h"
+#include "same_state.h"
 #include "scene_io.h"
 #include "world_fixture.h"
 #include "world_from_scene.h"
@@ -72,21 +72,6 @@ struct TwoIslands : Sleepy {
     }
 };
 
-// Every number the state dump writes, bit for bit.
-bool sameState(const engine::Core& a, const engine::Core& b) {
-    if (a.objectCount() != b.objectCount()) return false;
-    for (std::size_t i = 0; i < a.objectCount(); ++i) {
-        const engine::RigidShape& x = a.object(i);
-        const engine::RigidShape& y = b.object(i);
-        const double xs[] = {x.center().x, x.center().y, x.angle(), x.velocity().x, x.velocity().y, x.angularVelocity()};
-        const double ys[] = {y.center().x, y.center().y, y.angle(), y.velocity().x, y.velocity().y, y.angularVelocity()};
-        for (int k = 0; k < 6; ++k) {
-            if (std::bit_cast<std::uint64_t>(xs[k]) != std::bit_cast<std::uint64_t>(ys[k])) return false;
-        }
-    }
-    return true;
-}
-
 // A copy of every shape of `from`, as it is (vertices, velocities, sleep state), into `to`.
 void copyShapes(const engine::Core& from, engine::Core& to) {
     for (std::size_t i = 0; i < from.objectCount(); ++i) {
@@ -136,7 +121,7 @@ TEST_CASE("s5_5: with sleep on, every step is 5.4's (sleep off) up to the first 
                 if (on.page.core.awakeCount() < off.page.core.awakeCount()) {
                     first_sleep = step;
                 } else {
-                    REQUIRE(sameState(on.page.core, off.page.core));
+                    test::requireSameState(off.page.core, on.page.core, name, step);
                 }
             }
             CHECK(first_sleep > 0);  // the scene does come to rest, so the test saw something
@@ -286,8 +271,7 @@ TEST_CASE("s5_5: wake rule: removing the floor under a sleeping pile wakes it al
     for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
         on.page.steps(1);
         off.page.steps(1);
-        INFO("step " << step);
-        REQUIRE(sameState(on.page.core, off.page.core));
+        test::requireSameState(off.page.core, on.page.core, "the pile without its floor", step);
     }
     CHECK(on.page.core.objectCount() < 4);  // it has fallen off the canvas, as it should
 }

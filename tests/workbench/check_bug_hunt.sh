@@ -12,41 +12,15 @@
 #   - --next-bug plants the next bug of the list.
 # Builds only wb_s3_2. KEEP=1 keeps the copy.
 set -euo pipefail
-repository=$(cd "$(dirname "$0")/../.." && pwd)
-scratch=$(mktemp -d "${TMPDIR:-/tmp}/check_bug_hunt.XXXXXX")
-if [[ "${KEEP:-}" == 1 ]]; then echo "scratch copy: $scratch"; else trap 'rm -rf "$scratch"' EXIT; fi
-if git -C "$repository" rev-parse --git-dir >/dev/null 2>&1; then
-  git -C "$repository" ls-files -z | (cd "$repository" && tar --null -T - -cf -) | tar -xf - -C "$scratch"
-else  # not a clone: everything but build folders, pictures and workbenches
-  tar -C "$repository" --exclude='./build*' --exclude=./out --exclude=./workbench -cf - . | tar -xf - -C "$scratch"
-fi
-cd "$scratch"
+source "$(dirname "$0")/scratch_copy.sh" check_bug_hunt
 jobs=$(nproc)
 stage=3.2
 ours=ch3_collision/3.2_circle_collision
 list=tests/mutants/s3_2.txt
 hunt=workbench/3.2_bug_hunt
 
-fail() {
-  echo "check_bug_hunt: FAILED: $*" >&2
-  exit 1
-}
-ok() { echo "  ok: $*"; }
-
-# tools/workbench <arguments> must refuse in one line containing <words>, with status 2.
-refused() {
-  local words=$1 output status=0
-  shift
-  output=$(tools/workbench "$@" 2>&1) || status=$?
-  [[ $status -eq 2 ]] || fail "tools/workbench $* exited with $status, not 2: $output"
-  [[ $(wc -l <<<"$output") -eq 1 ]] || fail "tools/workbench $* said more than one line: $output"
-  [[ "$output" == *"$words"* ]] || fail "tools/workbench $* did not say \"$words\": $output"
-  ok "tools/workbench $* refused: $output"
-}
 # Field <key> of the <k>th mutant (from 0) of the list, read here, not by tools/workbench.
 field() { sed -n "s/^$2: *//p" "$list" | sed -n "$(($1 + 1))p" | sed 's/[[:space:]]*$//'; }
-# ctest's verdict on test <name> in <log>: Passed, Failed, ... or nothing.
-verdict() { sed -nE "s/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: $2 \.+ *(\*\*\*)?([A-Za-z ]*[A-Za-z]).*/\2/p" "$1"; }
 
 echo "== refusals"
 refused "no stage 9.9" --bug 9.9
