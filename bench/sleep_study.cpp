@@ -11,10 +11,13 @@
 //
 // Linked with stage 5.5's engine alone (namespace engine), beside the bench's library
 // for Box2D (whose stage engines live in their own namespaces, CMakeLists.txt).
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,6 +37,12 @@ struct Window {
     double end_s;         // simulated time at the window's end
     double us_per_step;   // wall clock
     double asleep_share;  // of the moving shapes, at the window's end
+    // Why the pile is not asleep (NaN for Box2D): over the window, how often a shape's
+    // rest timer started again because of its sleep speed or of its drift, and how
+    // many shapes the largest island holds at the window's end.
+    double speed_restarts = 0.0;
+    double drift_restarts = 0.0;
+    double largest_island = std::nan("");
 };
 
 struct Run {
@@ -48,6 +57,15 @@ std::size_t movingCount(const engine::Core& core) {
     return moving;
 }
 
+std::size_t largestIsland(const engine::Core& core) {
+    std::map<std::uint64_t, std::size_t> sizes;
+    std::size_t largest = 0;
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        if (!core.object(i).isStatic()) largest = std::max(largest, ++sizes[core.object(i).sleep().island]);
+    }
+    return largest;
+}
+
 bool allHeld(const engine::Core& core) {
     for (std::size_t i = 0; i < core.objectCount(); ++i) {
         const engine::RigidShape& shape = core.object(i);
@@ -56,10 +74,24 @@ bool allHeld(const engine::Core& core) {
     return true;
 }
 
+// Over one step: the shapes whose rest timer started again, by their sleep speed or,
+// slow enough, by their drift (islands.h).
+void countRestarts(const engine::Core& core, double sleep_speed, double& by_speed, double& by_drift) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const engine::RigidShape& shape = core.object(i);
+        if (shape.isResting() || shape.sleep().rested_s > 0.0) continue;
+        (shape.sleep().speed >= sleep_speed ? by_speed : by_drift) += 1.0;
+    }
+}
+
 Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, int windows) {
     engine::WorldSettings world = scene.world;
     world.solver = solver;
     world.sleep = sleep;
+    // The README's sleep speed scales with gravity: 3 px/s under the demo's 20 px/s^2
+    // keeps a shape at the top of its arc under it for 2 * 3 / 20 = 0.3 s, less than the
+    // time to sleep; under the rain's 100 px/s^2 the same 0.3 s allows 15 px/s.
+    world.sleep_speed = engine::kSleepSpeed * world.gravity.length() / engine::kGravity.length();
     browser::Window window(world.dt * 1000.0,
                            browser::Document{browser::Canvas(static_cast<int>(std::ceil(world.width)),
                                                              static_cast<int>(std::ceil(world.height)))});
@@ -69,18 +101,28 @@ Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, 
                     (sleep ? ", sleep on" : ", sleep off")};
     const double moving = static_cast<double>(movingCount(core));
     for (int w = 0; w < windows; ++w) {
-        const auto start = std::chrono::steady_clock::now();
+        double seconds = 0.0;
+        Window figures{};
         for (int step = 0; step < kWindowSteps; ++step) {
+            // Only the step is timed, not the counting around it.
+            const auto start = std::chrono::steady_clock::now();
             core.update();
+            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (!sleep) continue;
+            countRestarts(core, world.sleep_speed, figures.speed_restarts, figures.drift_restarts);
             // Held is only kept while sleep is on; a run with sleep off has no landing time.
-            if (sleep && run.landed_s < 0 && allHeld(core)) run.landed_s = static_cast<double>(core.stepCount()) * world.dt;
-            if (sleep && run.landed_s >= 0 && !allHeld(core)) run.landed_s = -1.0;
+            if (run.landed_s < 0 && allHeld(core)) run.landed_s = static_cast<double>(core.stepCount()) * world.dt;
+            if (run.landed_s >= 0 && !allHeld(core)) run.landed_s = -1.0;
         }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const double asleep = moving - static_cast<double>(core.awakeCount());
-        run.windows.push_back({.end_s = static_cast<double>(core.stepCount()) * world.dt,
-                               .us_per_step = seconds * 1e6 / kWindowSteps,
-                               .asleep_share = asleep / moving});
+        figures.end_s = static_cast<double>(core.stepCount()) * world.dt;
+        figures.us_per_step = seconds * 1e6 / kWindowSteps;
+        figures.asleep_share = (moving - static_cast<double>(core.awakeCount())) / moving;
+        if (sleep) {
+            figures.largest_island = static_cast<double>(largestIsland(core));
+        } else {
+            figures.speed_restarts = figures.drift_restarts = std::nan("");
+        }
+        run.windows.push_back(figures);
     }
     return run;
 }
@@ -94,7 +136,9 @@ Run runBox2d(const bench::SceneDescription& scene, int windows) {
         world->run(kWindowSteps);
         run.windows.push_back({.end_s = (w + 1) * kWindowSteps * scene.world.dt,
                                .us_per_step = (world->seconds() - before) * 1e6 / kWindowSteps,
-                               .asleep_share = std::nan("")});
+                               .asleep_share = std::nan(""),
+                               .speed_restarts = std::nan(""),
+                               .drift_restarts = std::nan("")});
     }
     return run;
 }
@@ -130,7 +174,7 @@ int main(int argc, char** argv) {
 
     const std::filesystem::path results(BENCH_RESULTS_DIR);
     std::ofstream csv(results / "sleep_rain_1000.csv");
-    csv << "engine,simulated_s,us_per_step,asleep_share\n";
+    csv << "engine,simulated_s,us_per_step,asleep_share,speed_restarts,drift_restarts,largest_island\n";
     bench::Chart chart{.title = "rain of 1000: the cost of a step as the rain settles",
                        .x_label = "simulated time (s)",
                        .y_label = "cost (us per step)",
@@ -138,7 +182,8 @@ int main(int argc, char** argv) {
     for (const Run& run : runs) {
         bench::Series series{.name = run.name, .joined = true};
         for (const Window& window : run.windows) {
-            csv << run.name << ',' << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share << '\n';
+            csv << run.name << ',' << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share << ','
+                << window.speed_restarts << ',' << window.drift_restarts << ',' << window.largest_island << '\n';
             series.points.push_back({window.end_s, window.us_per_step, ""});
         }
         chart.series.push_back(series);
@@ -151,6 +196,9 @@ int main(int argc, char** argv) {
         const Run& off = runs[k + 1];
         std::printf("%s: last landing at %.2f s; asleep 4 s later: %.1f %%; at the end: %.1f %%\n", on.name.c_str(),
                     on.landed_s, 100.0 * asleepAt(on, on.landed_s + 4.0), 100.0 * on.windows.back().asleep_share);
+        const Window& last = on.windows.back();
+        std::printf("  last half second: %.0f restarts by speed, %.0f by drift; the largest island holds %.0f shapes\n",
+                    last.speed_restarts, last.drift_restarts, last.largest_island);
         std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n", settledCost(on, settled),
                     settledCost(off, settled), 100.0 * settledCost(on, settled) / settledCost(off, settled));
     }

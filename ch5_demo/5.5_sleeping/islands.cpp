@@ -8,29 +8,55 @@
 namespace engine {
 
 namespace {
-// How fast a shape still moves, all told (islands.h): straight, turning at its farthest
-// point, and the overlap past the slop it would still have to be moved out of in a step.
-double sleepSpeed(const RigidShape& shape, double deepest, const WorldSettings& world) {
-    const double correction = std::max(0.0, deepest - world.slop) / world.dt;
-    return shape.velocity().length() + std::abs(shape.angularVelocity()) * shape.boundRadius() + correction;
+// How fast a shape moved in the step, all told (islands.h): straight and turning at its
+// farthest point, from where the step found it; and, with no correction to push it
+// out, the overlap past the slop it would have to leave within a step.
+double sleepSpeed(const RigidShape& shape, Vec2 start_center, double start_angle, double deepest,
+                  const WorldSettings& world) {
+    const double correction = world.positional_correction ? 0.0 : std::max(0.0, deepest - world.slop) / world.dt;
+    const double moved = shape.center().distance(start_center) / world.dt;
+    const double turned = std::abs(shape.angle() - start_angle) * shape.boundRadius() / world.dt;
+    return moved + turned + correction;
 }
 
-// How far the shape has gone since its rest began: its centre, and its farthest point
-// turning about it. A shape that starts to slide or tip from rest is slow for a long
-// while, but it goes on in one direction, where a resting one only trembles in place.
+// How far the shape has gone since its rest began, or since the last time_to_sleep of
+// it began (RigidShape::rest): its centre, and its farthest point turning about it. A
+// shape that starts to slide or tip from rest is slow for a long while, but it goes on
+// in one direction, where a resting one only trembles in place. Over the last window
+// only: a shape that creeps by a hair a second while its island is kept awake by
+// another would otherwise run out of allowance, and keep the island awake in turn.
 double driftSinceRest(const RigidShape& shape) {
     const SleepState& state = shape.sleep();
     if (state.rested_s == 0.0) return 0.0;
     return shape.center().distance(state.rest_center) + std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
 }
+
+// A steady creep at a tenth of the sleep speed, over the time to sleep: 0.15 px with
+// the defaults, where a box sliding from rest at 1.2 px/s^2 gets in half a second.
+double driftAllowed(const WorldSettings& world) { return world.sleep_speed * world.time_to_sleep / 10.0; }
 }  // namespace
 
-void Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
+void Islands::startStep(ShapeList shapes) {
+    touches_.clear();
+    step_start_center_.resize(shapes.size());
+    step_start_angle_.resize(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        step_start_center_[i] = shapes[i]->center();
+        step_start_angle_[i] = shapes[i]->angle();
+    }
+}
+
+bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
     touches_.push_back({i, j, depth});
     // An awake shape has reached a sleeping one: the sleeper's island must take part in
     // this very step, or the awake shape would sink into it as into a static wall.
-    if (shapes[i]->sleep().asleep) wakeIslandOf(shapes, i);
-    if (shapes[j]->sleep().asleep) wakeIslandOf(shapes, j);
+    bool woke = false;
+    for (const std::size_t shape : {i, j}) {
+        if (!shapes[shape]->sleep().asleep) continue;
+        wakeIslandOf(shapes, shape);
+        woke = true;
+    }
+    return woke;
 }
 
 std::size_t Islands::root(std::size_t i) {
@@ -63,10 +89,10 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
         // The book's passes leave a resting box rocking on its corners, off the floor
         // every other step: a contact in this step or the last one holds it.
         const bool held = held_[i] || shape.sleep().held;
-        const bool resting = world.movement && (held || !falling_without_support) &&
-                             sleepSpeed(shape, deepest_[i], world) < world.sleep_speed &&
-                             driftSinceRest(shape) <= world.slop;
-        shape.rest(resting, held_[i], world.dt);
+        const double speed = sleepSpeed(shape, step_start_center_[i], step_start_angle_[i], deepest_[i], world);
+        const bool resting = world.movement && (held || !falling_without_support) && speed < world.sleep_speed &&
+                             driftSinceRest(shape) <= driftAllowed(world);
+        shape.rest(resting, held_[i], speed, world.dt, world.time_to_sleep);
         double& rested = island_rested_[root(i)];
         rested = std::min(rested, shape.sleep().rested_s);
     }
