@@ -37,7 +37,11 @@ double driftAllowed(const WorldSettings& world) { return world.sleep_speed * wor
 }  // namespace
 
 void Islands::startStep(ShapeList shapes) {
-    touches_.clear();
+    const std::size_t count = shapes.size();
+    parent_.resize(count);
+    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+    deepest_.assign(count, 0.0);
+    held_.assign(count, 0);
     step_start_center_.resize(shapes.size());
     step_start_angle_.resize(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
@@ -47,7 +51,14 @@ void Islands::startStep(ShapeList shapes) {
 }
 
 bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
-    touches_.push_back({i, j, depth});
+    // Each pass of the book's relaxation reports its pairs again: the islands are joined
+    // as they come, with no list to keep.
+    deepest_[i] = std::max(deepest_[i], depth);
+    deepest_[j] = std::max(deepest_[j], depth);
+    held_[i] = held_[j] = 1;
+    // Never through a static shape: it holds what lies on it, but carries no motion from
+    // one of them to another.
+    if (!shapes[i]->isStatic() && !shapes[j]->isStatic()) parent_[root(i)] = root(j);
     // An awake shape has reached a sleeping one: the sleeper's island must take part in
     // this very step, or the awake shape would sink into it as into a static wall.
     bool woke = false;
@@ -67,19 +78,6 @@ std::size_t Islands::root(std::size_t i) {
 void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
     if (!world.sleep) return;
     const std::size_t count = shapes.size();
-    parent_.resize(count);
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
-    deepest_.assign(count, 0.0);
-    held_.assign(count, 0);
-    for (const Touch& touch : touches_) {
-        deepest_[touch.a] = std::max(deepest_[touch.a], touch.depth);
-        deepest_[touch.b] = std::max(deepest_[touch.b], touch.depth);
-        held_[touch.a] = held_[touch.b] = 1;
-        // Never through a static shape: it holds what lies on it, but carries no motion
-        // from one of them to another.
-        if (shapes[touch.a]->isStatic() || shapes[touch.b]->isStatic()) continue;
-        parent_[root(touch.a)] = root(touch.b);
-    }
     // Without gravity nothing falls, and a shape floating still is at rest.
     const bool falling_without_support = world.gravity != Vec2{};
     island_rested_.assign(count, std::numeric_limits<double>::infinity());

@@ -66,14 +66,9 @@ public:
     static std::size_t awakeCount(ShapeList shapes);
 
 private:
-    struct Touch {
-        std::size_t a, b;
-        double depth;
-    };
     std::size_t root(std::size_t i);
     void wakeLabel(ShapeList shapes, std::uint64_t island);
 
-    std::vector<Touch> touches_;
     std::vector<Vec2> step_start_center_;      // each shape as the step found it
     std::vector<double> step_start_angle_;
     std::vector<std::size_t> parent_;          // union-find over the step's contacts
