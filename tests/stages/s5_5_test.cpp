@@ -3,6 +3,8 @@
 // arc, a shape asleep while it overlaps, a box asleep mid-tip, a pile left hanging when
 // its floor goes). With sleep off the stage is 5.4 bit for bit (the identity feature
 // test); with sleep on, every step is 5.4's up to the first in which a shape sleeps.
+// 5.4's own stage tests run on this stage too, sleep on (s5_5.s5_4_stage in
+// CMakeLists.txt), but for two that watch a resting scene's contacts: asleep, it has none.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
