@@ -396,22 +396,29 @@ TEST_CASE("s5_5: a shape that spins in place does not sleep; one that floats sti
     CHECK(run.asleep(1));
 }
 
-TEST_CASE("s5_5: a shape that trembles in place, turning to and fro each step, does not sleep") {
-    // No gravity: a circle of radius 20 turned by 0.005 rad one step and back the next.
-    // It never strays: its rim is at most 20 * 0.005 = 0.1 px from where it was, under
-    // the drift allowed over a rest (3 px/s * 0.5 s / 10 = 0.15 px). But its rim moves
-    // 0.1 px in every step, at 0.1 * 60 = 6 px/s, twice the sleep speed.
+TEST_CASE("s5_5: a shape that trembles in place, to and fro each step, does not sleep") {
+    // No gravity: a circle of radius 20 turned by 0.005 rad one step and back the next,
+    // and another moved 0.1 px one step and back the next. Neither strays: each is at
+    // most 0.1 px (20 * 0.005 at the rim) from where it was, under the drift allowed
+    // over a rest (3 px/s * 0.5 s / 10 = 0.15 px). But each moves 0.1 px in every step,
+    // at 0.1 * 60 = 6 px/s, twice the sleep speed.
     WorldSettings world = engine::kBookWorld;
     world.gravity = {};
     Sleepy run(world);
-    engine::Circle& circle = run.page.core.add(engine::Circle({200, 200}, 20));
+    engine::Circle& turning = run.page.core.add(engine::Circle({200, 200}, 20));
+    engine::Circle& shaking = run.page.core.add(engine::Circle({500, 200}, 20));
     const double spin = 0.005 * kStepsPerSecond;  // rad/s
+    const double speed = 0.1 * kStepsPerSecond;   // px/s
     for (int step = 0; step < 5 * kStepsPerSecond; ++step) {
-        circle.setAngularVelocity(step % 2 == 0 ? spin : -spin);
+        const double sign = step % 2 == 0 ? 1.0 : -1.0;
+        turning.setAngularVelocity(sign * spin);
+        shaking.setVelocity({sign * speed, 0});
         run.page.steps(1);
         REQUIRE_FALSE(run.asleep(0));
+        REQUIRE_FALSE(run.asleep(1));
     }
-    CHECK_THAT(circle.sleep().speed, test::near(6.0, 1e-6));
+    CHECK_THAT(turning.sleep().speed, test::near(6.0, 1e-6));
+    CHECK_THAT(shaking.sleep().speed, test::near(6.0, 1e-6));
 }
 
 TEST_CASE("s5_5: a shape's drift counts over the last time_to_sleep of its rest, not over all of it") {
