@@ -14,7 +14,10 @@
 //                                   the OPTIONs do not say --no-gif
 // With --crop X,Y,W,H each half shows only that rectangle of its canvas (in canvas
 // pixels, so --scale zooms into it). With --ghost each joined picture also shows the first frame faintly under it
-// (needs --every), so that whatever moved since the start shows twice.
+// (needs --every), so that whatever moved since the start shows twice. With --trail each
+// joined picture shows every earlier frame the runs saved faintly under it (the final
+// picture: every frame), so a moving shape shows once a saved frame: several exposures
+// in one picture.
 // Exit status: 0 done; 2 refused before anything was written (a bad option, a scene or
 // setting that is not a JSON object, a setting the program refuses: its one line is
 // repeated); 1 a picture could not be written; a run's own status when it failed
@@ -32,6 +35,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -64,6 +68,7 @@ struct Request {
     fs::path program, scene, out = "out/compare";
     std::string settings[2];
     std::optional<int> ghost;  // the frame drawn faintly under every picture
+    bool trail = false;        // every earlier saved frame drawn faintly under each picture
     std::vector<int> crop;  // x, y, width, height in canvas pixels; empty: the whole canvas
     std::vector<std::string> options;  // for the program, after --
 };
@@ -205,12 +210,26 @@ void compare(const Request& request) {
         starts[0] = browser::canvas_of(browser::read_png(left / name), scale);
         starts[1] = browser::canvas_of(browser::read_png(right / name), scale);
     }
+    // The saved frames of each run, in order, for --trail.
+    std::vector<std::pair<int, browser::Image>> saved[2];
+    if (request.trail) {
+        for (const std::string& name : shared_pictures(left, right)) {
+            if (name == "final.png") continue;
+            for (int i = 0; i < 2; ++i) {
+                saved[i].emplace_back(frame_number(name), browser::canvas_of(
+                                                              browser::read_png(folder.staging() / sides[i].name / name), scale));
+            }
+        }
+    }
     std::vector<std::string> frames;
     for (const std::string& name : shared_pictures(left, right)) {
         browser::Image halves[2];
         for (int i = 0; i < 2; ++i) {
             halves[i] = browser::canvas_of(browser::read_png(folder.staging() / sides[i].name / name), scale);
             if (starts[i]) halves[i] = browser::with_start_ghost(halves[i], *starts[i]);
+            for (const auto& [frame, picture] : saved[i]) {
+                if (name == "final.png" || frame < frame_number(name)) halves[i] = browser::with_start_ghost(halves[i], picture);
+            }
             if (!request.crop.empty()) {
                 halves[i] = browser::cropped(halves[i], request.crop[0] * scale, request.crop[1] * scale,
                                              request.crop[2] * scale, request.crop[3] * scale);
@@ -252,6 +271,8 @@ int main(int argc, char** argv) {
     app.add_option("--ghost", request.ghost, "draw this frame's picture faintly under each one (a frame --every saves)")
         ->type_name("FRAME")
         ->check(CLI::NonNegativeNumber);
+    app.add_flag("--trail", request.trail,
+                 "draw every earlier frame the runs saved (--every) faintly under each picture: several exposures in one");
     app.add_option("--crop", request.crop, "show only this part of each canvas, in canvas pixels")
         ->type_name("X,Y,W,H")
         ->delimiter(',')
