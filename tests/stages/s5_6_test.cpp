@@ -275,6 +275,26 @@ TEST_CASE("s5_6: with no fast shape, continuous on moves every shape exactly as 
     }
 }
 
+TEST_CASE("s5_6: the rest of the impact's step is lost: the bounce lags the analytic one by (1 - t) v dt") {
+    // A ball of radius 10 at x = 100 flies at 6,000 px/s (100 px a step) at a wall whose
+    // face is at x = 400; e = 1, no friction. Its rim touches the face when its centre
+    // is at 390, 2.9 steps in: t = 0.9 of step 3. The analytic ball is back at 390 - (100
+    // n - 290) after n steps. The swept one stops at the touch (0.5 px deeper), loses
+    // the last 0.1 of step 3, is pushed out and bounced in step 4, and from then on runs
+    // (1 - 0.9) x 100 = 10 px behind, at the right speed.
+    WorldSettings world = shootingWorld(engine::SolverKind::book, true);
+    test::WorldFixture page(world);
+    page.core.add(engine::Rectangle({401, 225}, 2, 400, {.mass = 0, .friction = 0, .restitution = 1}));
+    engine::Circle& ball = page.core.add(engine::Circle({100, 225}, 10, {.mass = 1, .friction = 0, .restitution = 1}));
+    ball.setVelocity({6000, 0});
+    page.steps(3);
+    CHECK_THAT(ball.center().x, test::near(390.5, 1e-9));  // stopped at its time of impact
+    page.steps(3);
+    const double analytic = 390 - (100 * 6 - 290);
+    CHECK_THAT(ball.center().x, test::near(analytic + 10, 1e-6));
+    CHECK_THAT(ball.velocity().x, test::near(-6000, 1e-9));
+}
+
 TEST_CASE("s5_6: P turns continuous collision off and on live") {
     test::WorldFixture page(shootingWorld(engine::SolverKind::book, true));
     page.press(browser::Key::P);
