@@ -159,23 +159,37 @@ void ContinuousCollision::startStep(ShapeList shapes) {
 
 void ContinuousCollision::sweep(ShapeList shapes) {
     sweeps_.clear();
+    // A shape that is no bullet is swept against the static shapes alone: they are
+    // listed once, so that a world of many fast shapes and few static ones pays for
+    // the few.
+    static_.clear();
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+        if (shapes[j]->isStatic()) static_.push_back(j);
+    }
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         RigidShape& shape = *shapes[i];
         if (shape.isResting()) continue;
         const Pose& start = start_[i];
         const Vec2 offset = shape.center() - start.center;
         const double turn = shape.angle() - start.angle;
-        const StepMotion motion{.start = moved(outlineOf(shape), offset * -1, -turn), .offset = offset, .turn = turn};
+        // How far the motion reaches does not depend on where it starts: the outline
+        // where it ended tells, and is moved back to the start only for a fast shape.
+        StepMotion motion{.start = outlineOf(shape), .offset = offset, .turn = turn};
         const double extent = smallestExtent(shape);
         if (!isFast(motion, extent)) continue;
+        motion.start = moved(motion.start, offset * -1, -turn);
 
         std::optional<double> first;
-        for (std::size_t j = 0; j < shapes.size(); ++j) {
+        const auto sweepAgainst = [&](std::size_t j) {
             const RigidShape& other = *shapes[j];
-            if (j == i || !(other.isStatic() || shape.isBullet())) continue;
-            if (!mayMeet(shape, start.center, shape.center(), other)) continue;
+            if (j == i || !mayMeet(shape, start.center, shape.center(), other)) return;
             const std::optional<double> impact = impactFromContact(motion, outlineOf(other), extent);
             if (impact && (!first || *impact < *first)) first = impact;
+        };
+        if (shape.isBullet()) {
+            for (std::size_t j = 0; j < shapes.size(); ++j) sweepAgainst(j);
+        } else {
+            for (std::size_t j : static_) sweepAgainst(j);
         }
         sweeps_.push_back({i, start.center, shape.center(), first});
         if (!first) continue;

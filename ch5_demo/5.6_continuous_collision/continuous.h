@@ -105,6 +105,7 @@ private:
         double angle = 0.0;
     };
     std::vector<Pose> start_;
+    std::vector<std::size_t> static_;  // the places of the static shapes, this step
     std::vector<Sweep> sweeps_;
 };
 

@@ -122,7 +122,11 @@ void Core::update() {
         for (const auto& shape : all_objects_) {
             if (!shape->sleep().asleep) shape->update(sub_step);
         }
-        if (settings_.continuous) continuous_.sweep(all_objects_);
+        if (settings_.continuous) {
+            continuous_.sweep(all_objects_);
+        } else {
+            continuous_.forgetSweeps();  // the overlay shows no sweep from before P turned it off
+        }
         physics_.islands().endStep(all_objects_, sub_step);
         if (settings_.remove_out_of_bounds) removeOutOfBounds();
     }

@@ -38,6 +38,8 @@ constexpr Color kTangentImpulseColor{120, 120, 0, 255};  // olive: the tangent i
 
 constexpr Color kLeverColor{110, 110, 110, 255};  // gray: lever arms and spin changes
 
+constexpr Color kSweepColor{200, 150, 0, 255};  // amber: the sweep of a fast shape
+
 // The normal is a unit vector: drawn this long, whatever the depth.
 constexpr double kNormalLength = 20.0;  // px
 
@@ -149,6 +151,19 @@ void drawLeverArms(Sheet& sheet, const Core& core) {
     sheet.legend.push_back({kLeverColor, "lever arms; spin change (0.5 s)"});
 }
 
+// Continuous collision (continuous.h): each fast shape's path in the last step, from
+// where its centre started to where its motion would have taken it, and a marker where
+// the sweep stopped it (its centre at the time of impact).
+void drawSweeps(Sheet& sheet, const Core& core) {
+    for (const Sweep& sweep : core.continuous().sweeps()) {
+        draw::line(sheet.canvas, sweep.from, sweep.to, kSweepColor);
+        if (sweep.impact) draw::marker(sheet.canvas, sweep.from + (sweep.to - sweep.from) * *sweep.impact, kSweepColor);
+    }
+    if (!core.continuous().sweeps().empty()) {
+        sheet.legend.push_back({kSweepColor, "fast shape's path; where it was stopped"});
+    }
+}
+
 }  // namespace
 
 void drawOverlay(browser::Window& window, const Core& core) {
@@ -163,6 +178,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
     drawImpulses(sheet, core);
     drawLeverArms(sheet, core);
     drawContacts(sheet.canvas, core, legend);
+    drawSweeps(sheet, core);
 }
 
 }  // namespace engine

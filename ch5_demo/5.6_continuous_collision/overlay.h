@@ -34,6 +34,9 @@
 //
 // 5.4's contact solver adds its contacts (contact_overlay.h): reference and incident
 // faces, the clipped points, and the totals each point ended the step with.
+//
+// This stage's continuous collision adds the sweeps (continuous.h): each fast shape's
+// path in the last step, and where the sweep stopped it.
 
 #include "browser.h"
 #include "core.h"
