@@ -135,7 +135,10 @@ double reach(const StepMotion& motion) {
     return motion.offset.length() + std::abs(motion.turn) * farthestCorner(motion.start);
 }
 
-bool isFast(const StepMotion& motion, double smallest_extent) { return reach(motion) > kFastShare * smallest_extent; }
+bool isFast(const RigidShape& shape, Vec2 offset, double turn) {
+    const double farthest = shape.type() == ShapeType::Circle ? 0.0 : shape.boundRadius();
+    return offset.length() + std::abs(turn) * farthest > kFastShare * smallestExtent(shape);
+}
 
 std::optional<double> timeOfImpact(const StepMotion& motion, const Outline& obstacle, double depth) {
     const double tolerance = kToleranceShare * depth;
@@ -172,12 +175,9 @@ void ContinuousCollision::sweep(ShapeList shapes) {
         const Pose& start = start_[i];
         const Vec2 offset = shape.center() - start.center;
         const double turn = shape.angle() - start.angle;
-        // How far the motion reaches does not depend on where it starts: the outline
-        // where it ended tells, and is moved back to the start only for a fast shape.
-        StepMotion motion{.start = outlineOf(shape), .offset = offset, .turn = turn};
+        if (!isFast(shape, offset, turn)) continue;
+        const StepMotion motion{.start = moved(outlineOf(shape), offset * -1, -turn), .offset = offset, .turn = turn};
         const double extent = smallestExtent(shape);
-        if (!isFast(motion, extent)) continue;
-        motion.start = moved(motion.start, offset * -1, -turn);
 
         std::optional<double> first;
         const auto sweepAgainst = [&](std::size_t j) {

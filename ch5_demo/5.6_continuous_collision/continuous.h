@@ -72,7 +72,10 @@ struct StepMotion {
 };
 // How far the motion carries the outline's farthest point, at most.
 double reach(const StepMotion& motion);
-bool isFast(const StepMotion& motion, double smallest_extent);
+// Whether `shape`, having moved by `offset` and turned by `turn` in this step, is fast:
+// its farthest point (a rectangle's corner; nothing of a circle's outline moves when it
+// turns) moved more than kFastShare of its smallest extent.
+bool isFast(const RigidShape& shape, Vec2 offset, double turn);
 
 // The share t of the motion (0 < t <= 1) at which the moving outline is first `depth`
 // into `obstacle` (to within a quarter of the depth), the obstacle standing still.

@@ -177,18 +177,18 @@ TEST_CASE("s5_6: time of impact of a spinning rectangle: stopped in the wall, by
 
 TEST_CASE("s5_6: a shape is fast when its farthest point moves more than half its smallest extent") {
     const engine::Circle ball({0, 0}, 10);  // extent 10: fast beyond 5 px
-    CHECK_FALSE(engine::isFast(motionOf(ball, {3, 4}), engine::smallestExtent(ball)));
-    CHECK(engine::isFast(motionOf(ball, {3, 4.01}), engine::smallestExtent(ball)));
-    CHECK_FALSE(engine::isFast(motionOf(ball, {0, 0}, 100.0), engine::smallestExtent(ball)));  // a circle's spin moves no outline
+    CHECK_FALSE(engine::isFast(ball, {3, 4}, 0.0));
+    CHECK(engine::isFast(ball, {3, 4.01}, 0.0));
+    CHECK_FALSE(engine::isFast(ball, {0, 0}, 100.0));  // a circle's spin moves no outline
 
     const engine::Rectangle plank({0, 0}, 40, 10);  // extent 5: fast beyond 2.5 px
     CHECK(engine::smallestExtent(plank) == 5.0);
-    CHECK_FALSE(engine::isFast(motionOf(plank, {2.5, 0}), 5.0));
-    CHECK(engine::isFast(motionOf(plank, {2.51, 0}), 5.0));
+    CHECK_FALSE(engine::isFast(plank, {2.5, 0}, 0.0));
+    CHECK(engine::isFast(plank, {2.51, 0}, 0.0));
     // Its corners are sqrt(20^2 + 5^2) = 20.6 px out: a turn of 0.12 rad moves them 2.47
     // px, of 0.125 rad 2.58 px.
-    CHECK_FALSE(engine::isFast(motionOf(plank, {0, 0}, 0.12), 5.0));
-    CHECK(engine::isFast(motionOf(plank, {0, 0}, 0.125), 5.0));
+    CHECK_FALSE(engine::isFast(plank, {0, 0}, 0.12));
+    CHECK(engine::isFast(plank, {0, 0}, 0.125));
 }
 
 // =================================================================================
