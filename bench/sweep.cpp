@@ -15,7 +15,7 @@ struct Variant {
 };
 
 // One case per knob, each a line or two: the list of every value the bench tries reads
-// best as one table, so this function stays longer than the house's 80 lines.
+// best as one table, so this function is long on purpose (over the house's 80 lines).
 std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
     std::vector<Variant> list;
     const auto add = [&](std::string label, auto change) {
