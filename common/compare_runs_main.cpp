@@ -167,6 +167,21 @@ std::vector<std::string> shared_pictures(const fs::path& left, const fs::path& r
 
 int frame_number(const std::string& name) { return std::atoi(name.c_str() + 6); }
 
+// A saved frame's number and its canvas, for --trail.
+struct Frame {
+    int number;
+    browser::Image canvas;
+};
+
+// The frames both runs saved, as the run whose folder is `side` drew them, in order.
+std::vector<Frame> savedFrames(const fs::path& left, const fs::path& right, const fs::path& side, int scale) {
+    std::vector<Frame> frames;
+    for (const std::string& name : shared_pictures(left, right)) {
+        if (name != "final.png") frames.push_back({frame_number(name), browser::canvas_of(browser::read_png(side / name), scale)});
+    }
+    return frames;
+}
+
 std::string frame_picture_name(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -210,25 +225,18 @@ void compare(const Request& request) {
         starts[0] = browser::canvas_of(browser::read_png(left / name), scale);
         starts[1] = browser::canvas_of(browser::read_png(right / name), scale);
     }
-    // The saved frames of each run, in order, for --trail.
-    std::vector<std::pair<int, browser::Image>> saved[2];
-    if (request.trail) {
-        for (const std::string& name : shared_pictures(left, right)) {
-            if (name == "final.png") continue;
-            for (int i = 0; i < 2; ++i) {
-                saved[i].emplace_back(frame_number(name), browser::canvas_of(
-                                                              browser::read_png(folder.staging() / sides[i].name / name), scale));
-            }
-        }
-    }
+    const std::vector<Frame> saved[2] = {request.trail ? savedFrames(left, right, left, scale) : std::vector<Frame>{},
+                                         request.trail ? savedFrames(left, right, right, scale) : std::vector<Frame>{}};
     std::vector<std::string> frames;
     for (const std::string& name : shared_pictures(left, right)) {
         browser::Image halves[2];
         for (int i = 0; i < 2; ++i) {
             halves[i] = browser::canvas_of(browser::read_png(folder.staging() / sides[i].name / name), scale);
             if (starts[i]) halves[i] = browser::with_start_ghost(halves[i], *starts[i]);
-            for (const auto& [frame, picture] : saved[i]) {
-                if (name == "final.png" || frame < frame_number(name)) halves[i] = browser::with_start_ghost(halves[i], picture);
+            for (const Frame& frame : saved[i]) {
+                if (name == "final.png" || frame.number < frame_number(name)) {
+                    halves[i] = browser::with_start_ghost(halves[i], frame.canvas);
+                }
             }
             if (!request.crop.empty()) {
                 halves[i] = browser::cropped(halves[i], request.crop[0] * scale, request.crop[1] * scale,
