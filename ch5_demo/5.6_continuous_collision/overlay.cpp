@@ -38,7 +38,7 @@ constexpr Color kTangentImpulseColor{120, 120, 0, 255};  // olive: the tangent i
 
 constexpr Color kLeverColor{110, 110, 110, 255};  // gray: lever arms and spin changes
 
-constexpr Color kSweepColor{200, 150, 0, 255};  // amber: the sweep of a fast shape
+constexpr Color kSweepColor{120, 220, 0, 255};  // lime: the sweep of a fast shape
 
 // The normal is a unit vector: drawn this long, whatever the depth.
 constexpr double kNormalLength = 20.0;  // px
@@ -160,7 +160,7 @@ void drawSweeps(Sheet& sheet, const Core& core) {
         if (sweep.impact) draw::marker(sheet.canvas, sweep.from + (sweep.to - sweep.from) * *sweep.impact, kSweepColor);
     }
     if (!core.continuous().sweeps().empty()) {
-        sheet.legend.push_back({kSweepColor, "fast shape's path; where it was stopped"});
+        sheet.legend.push_back({kSweepColor, "fast shape: path, where stopped"});
     }
 }
 
