@@ -28,7 +28,8 @@ Scene loadScene(const std::filesystem::path& file);
 
 // Adds the bodies of a scene file, in file order (object 0 is the first body), in
 // place of the book's MyGame scene. Each is built as the book builds a shape, then
-// turned with rotate(angle) and set moving with its velocity and angular velocity.
+// turned with rotate(angle) and set moving with its velocity and angular velocity; a
+// body with "bullet": true becomes a bullet (continuous.h).
 void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies);
 
 // One row per object for the core's current step (0 before any update).
