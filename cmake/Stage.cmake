@@ -34,16 +34,11 @@ function(add_stage id)
   set(labels ${id} ${STAGE_CHAPTER})
   if(PHYSICS_TESTS)  # Catch2 found (top-level CMakeLists.txt)
     stage_test_sources(test_sources ${id} ${STAGE_FEATURES})
+    shared_catch_pch(catch_pch)
     add_executable(${id}_tests ${test_sources})
     stage_test_program(${id}_tests ${id} ${id}_engine ${program})
-    # Every test file includes Catch2's 17,000-line header: parse it once per executable.
-    target_precompile_headers(${id}_tests PRIVATE <catch2/catch.hpp>)
-    # The tests check, the engine computes: the engine keeps the build's -O3, the test
-    # files (Catch2's macros, most of a full build's compile time) take -O1, which
-    # compiles them in two thirds of the time and cannot change a result: the numbers
-    # they check come from the engine, and -ffp-contract=off keeps every level's doubles
-    # the same.
-    target_compile_options(${id}_tests PRIVATE $<$<CONFIG:Release>:-O1>)
+    # Every test file includes Catch2's 17,000-line header: parse it once for every stage.
+    target_precompile_headers(${id}_tests REUSE_FROM ${catch_pch})
     add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 
     foreach(feature IN LISTS STAGE_FEATURES)
@@ -129,6 +124,7 @@ endfunction()
 # main, the test support headers, and the facts the tests ask for (STAGE_ID names the
 # stage whose behaviour is expected, STAGE_PROGRAM the program to run).
 function(stage_test_program target id engine program)
+  test_optimization(${target})
   # oracle/: the collision oracle the tests judge the engine by (shared with the bench).
   target_link_libraries(${target} PRIVATE ${engine} oracle catch2_main)
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
@@ -136,4 +132,28 @@ function(stage_test_program target id engine program)
     STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
     SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes"
     BENCH_SCENES_DIR="${PROJECT_SOURCE_DIR}/bench/scenes")
+endfunction()
+
+# The tests check, the engine computes: the engine keeps the build's -O3, the test files
+# (Catch2's macros, most of a full build's compile time) take -O1, which compiles them in
+# two thirds of the time and cannot change a result: the numbers they check come from the
+# engine, and -ffp-contract=off keeps every level's doubles the same. A target that
+# shares its precompiled header with test programs takes it too (the flags must match).
+function(test_optimization target)
+  target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O1>)
+endfunction()
+
+# The name of the target whose precompiled Catch2 header every stage's test programs (and
+# the workbench's) reuse, made on first use. Its flags are theirs: GCC takes a
+# precompiled header only when the options match, and otherwise reads the header again.
+function(shared_catch_pch out)
+  if(NOT TARGET catch_pch)
+    set(source ${CMAKE_BINARY_DIR}/catch_pch.cpp)
+    file(CONFIGURE OUTPUT ${source} CONTENT "// Builds the precompiled Catch2 header the test programs share.\n")
+    add_library(catch_pch OBJECT EXCLUDE_FROM_ALL ${source})
+    target_link_libraries(catch_pch PRIVATE Catch2::Catch2)
+    target_precompile_headers(catch_pch PRIVATE <catch2/catch.hpp>)
+    test_optimization(catch_pch)
+  endif()
+  set(${out} catch_pch PARENT_SCOPE)
 endfunction()

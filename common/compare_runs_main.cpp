@@ -14,7 +14,10 @@
 //                                   the OPTIONs do not say --no-gif
 // With --crop X,Y,W,H each half shows only that rectangle of its canvas (in canvas
 // pixels, so --scale zooms into it). With --ghost each joined picture also shows the first frame faintly under it
-// (needs --every), so that whatever moved since the start shows twice.
+// (needs --every), so that whatever moved since the start shows twice. With --trail each
+// joined picture shows every earlier frame the runs saved faintly under it (the final
+// picture: every frame), so a moving shape shows once a saved frame: several exposures
+// in one picture.
 // Exit status: 0 done; 2 refused before anything was written (a bad option, a scene or
 // setting that is not a JSON object, a setting the program refuses: its one line is
 // repeated); 1 a picture could not be written; a run's own status when it failed
@@ -32,6 +35,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -64,6 +68,7 @@ struct Request {
     fs::path program, scene, out = "out/compare";
     std::string settings[2];
     std::optional<int> ghost;  // the frame drawn faintly under every picture
+    bool trail = false;        // every earlier saved frame drawn faintly under each picture
     std::vector<int> crop;  // x, y, width, height in canvas pixels; empty: the whole canvas
     std::vector<std::string> options;  // for the program, after --
 };
@@ -162,6 +167,21 @@ std::vector<std::string> shared_pictures(const fs::path& left, const fs::path& r
 
 int frame_number(const std::string& name) { return std::atoi(name.c_str() + 6); }
 
+// A saved frame's number and its canvas, for --trail.
+struct Frame {
+    int number;
+    browser::Image canvas;
+};
+
+// The frames both runs saved, as the run whose folder is `side` drew them, in order.
+std::vector<Frame> savedFrames(const fs::path& left, const fs::path& right, const fs::path& side, int scale) {
+    std::vector<Frame> frames;
+    for (const std::string& name : shared_pictures(left, right)) {
+        if (name != "final.png") frames.push_back({frame_number(name), browser::canvas_of(browser::read_png(side / name), scale)});
+    }
+    return frames;
+}
+
 std::string frame_picture_name(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -205,12 +225,19 @@ void compare(const Request& request) {
         starts[0] = browser::canvas_of(browser::read_png(left / name), scale);
         starts[1] = browser::canvas_of(browser::read_png(right / name), scale);
     }
+    const std::vector<Frame> saved[2] = {request.trail ? savedFrames(left, right, left, scale) : std::vector<Frame>{},
+                                         request.trail ? savedFrames(left, right, right, scale) : std::vector<Frame>{}};
     std::vector<std::string> frames;
     for (const std::string& name : shared_pictures(left, right)) {
         browser::Image halves[2];
         for (int i = 0; i < 2; ++i) {
             halves[i] = browser::canvas_of(browser::read_png(folder.staging() / sides[i].name / name), scale);
             if (starts[i]) halves[i] = browser::with_start_ghost(halves[i], *starts[i]);
+            for (const Frame& frame : saved[i]) {
+                if (name == "final.png" || frame.number < frame_number(name)) {
+                    halves[i] = browser::with_start_ghost(halves[i], frame.canvas);
+                }
+            }
             if (!request.crop.empty()) {
                 halves[i] = browser::cropped(halves[i], request.crop[0] * scale, request.crop[1] * scale,
                                              request.crop[2] * scale, request.crop[3] * scale);
@@ -252,6 +279,8 @@ int main(int argc, char** argv) {
     app.add_option("--ghost", request.ghost, "draw this frame's picture faintly under each one (a frame --every saves)")
         ->type_name("FRAME")
         ->check(CLI::NonNegativeNumber);
+    app.add_flag("--trail", request.trail,
+                 "draw every earlier frame the runs saved (--every) faintly under each picture: several exposures in one");
     app.add_option("--crop", request.crop, "show only this part of each canvas, in canvas pixels")
         ->type_name("X,Y,W,H")
         ->delimiter(',')

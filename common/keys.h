@@ -20,11 +20,14 @@
 
 namespace browser {
 
+// The keys in rows, letters, digits, the rest (the layout would put one on a line).
+// clang-format off
 enum class Key {
     A, B, C, D, E, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, V, W, X, Y, Z,
     Digit0, Digit1, Digit2, Digit3, Digit4, Digit5, Digit6, Digit7, Digit8, Digit9,
     Comma, Up, Down,
 };
+// clang-format on
 
 inline constexpr int kKeyCount = static_cast<int>(Key::Down) + 1;
 

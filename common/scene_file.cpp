@@ -381,7 +381,7 @@ std::vector<BodyKey> body_keys(ShapeKind shape) {
     return keys;
 }
 
-BodyDescription read_body(const json& object, const std::string& path) {
+BodyDescription read_body(const json& object, const std::string& path, StageBodyKeys stage_keys) {
     require_object(object, path);
     // The shape decides which keys the body may have, so it is read before the rest.
     const std::string shape_path = member_path(path, "shape");
@@ -397,6 +397,7 @@ BodyDescription read_body(const json& object, const std::string& path) {
         known.emplace_back(key.name);
         if (key.required) required.emplace_back(key.name);
     }
+    if (stage_keys.bullet) known.emplace_back("bullet");
     std::string owner = "a ";
     owner.append(shape_name(body.shape)).append(" body");
     refuse_unknown_keys(object, path, known, owner);
@@ -418,39 +419,44 @@ BodyDescription read_body(const json& object, const std::string& path) {
             },
             key.member);
     }
+    if (const auto bullet = object.find("bullet"); stage_keys.bullet && bullet != object.end()) {
+        body.bullet = flag(*bullet, member_path(path, "bullet"));
+    }
     return body;
 }
 
-std::vector<BodyDescription> read_bodies(const json& list, const std::string& path) {
+std::vector<BodyDescription> read_bodies(const json& list, const std::string& path, StageBodyKeys stage_keys) {
     if (!list.is_array()) refuse_value(path, "must be an array [...] of bodies", list);
     if (list.size() > kMaxBodies) {
         refuse(path, "more than " + std::to_string(kMaxBodies) + " bodies (got " + std::to_string(list.size()) +
                          "); every step tests every pair of them");
     }
     std::vector<BodyDescription> bodies;
-    for (std::size_t i = 0; i < list.size(); ++i) bodies.push_back(read_body(list[i], element_path(path, i)));
+    for (std::size_t i = 0; i < list.size(); ++i) bodies.push_back(read_body(list[i], element_path(path, i), stage_keys));
     return bodies;
 }
 
-std::vector<BodyDescription> read_scene(const json& root, std::span<const WorldKey> world_keys) {
+std::vector<BodyDescription> read_scene(const json& root, std::span<const WorldKey> world_keys,
+                                        StageBodyKeys stage_keys) {
     require_object(root, "");
     refuse_unknown_keys(root, "", {"world", "bodies"}, "a scene");
     std::vector<Assignment> world;
     if (const auto found = root.find("world"); found != root.end()) world = read_world(*found, world_keys);
     std::vector<BodyDescription> bodies;
-    if (const auto found = root.find("bodies"); found != root.end()) bodies = read_bodies(*found, "bodies");
+    if (const auto found = root.find("bodies"); found != root.end()) bodies = read_bodies(*found, "bodies", stage_keys);
     for (const Assignment& assign : world) assign();
     return bodies;
 }
 
 }  // namespace
 
-std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const WorldKey> world_keys) {
-    return read_scene_text(read_text(file), file.string(), world_keys);
+std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const WorldKey> world_keys,
+                                        StageBodyKeys stage_keys) {
+    return read_scene_text(read_text(file), file.string(), world_keys, stage_keys);
 }
 
 std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
-                                             std::span<const WorldKey> world_keys) {
+                                             std::span<const WorldKey> world_keys, StageBodyKeys stage_keys) {
     try {
         if (text.size() > kMaxSceneBytes) {
             refuse("", "longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene may hold");
@@ -459,7 +465,7 @@ std::vector<BodyDescription> read_scene_text(const std::string& text, std::strin
         if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
             refuse(line_and_column(text, nul + 1), "a NUL byte, which a scene file never holds");
         }
-        return read_scene(parse(text), world_keys);
+        return read_scene(parse(text), world_keys, stage_keys);
     } catch (const Refusal& refusal) {
         std::string message = printable(source);
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);

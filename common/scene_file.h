@@ -51,8 +51,17 @@ struct BodyDescription {
     double angle = 0.0;  // rad, applied after construction as the book's rotate(angle)
     Vec2 velocity;
     double angular_velocity = 0.0;  // rad/s
+    // 5.6 on: a bullet is also swept against moving shapes, not only static ones (5.6's
+    // README). Only a stage that says it reads the key (StageBodyKeys) accepts it.
+    bool bullet = false;
 
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
+};
+
+// The body keys that only some stages read. Every stage reads the book's body keys; a
+// key a stage does not read is refused, as an unknown world key is.
+struct StageBodyKeys {
+    bool bullet = false;  // "bullet": true / false (5.6 on)
 };
 
 // What a number in a scene file must be, and the words that say so in a refusal.
@@ -170,12 +179,13 @@ struct SceneError : std::runtime_error {
 // to, and its bodies come back in file order (the object index the keys 0-9 select).
 // Throws SceneError on the first problem found, before any setting is changed, so
 // nothing is built from a scene that is only half right.
-std::vector<BodyDescription> load_scene(const std::filesystem::path& file, std::span<const WorldKey> world_keys);
+std::vector<BodyDescription> load_scene(const std::filesystem::path& file, std::span<const WorldKey> world_keys,
+                                        StageBodyKeys body_keys = {});
 
 // The same for a scene that is already text, such as one a program made in memory (the
 // bench hands each stage its scenes this way). `source` stands for the file name in a
 // refusal.
 std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
-                                             std::span<const WorldKey> world_keys);
+                                             std::span<const WorldKey> world_keys, StageBodyKeys body_keys = {});
 
 }  // namespace browser

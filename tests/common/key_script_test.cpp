@@ -130,11 +130,14 @@ TEST_CASE("key_script: a token with control characters or bytes that are not UTF
 TEST_CASE("key_script: every bad token is named in a one-line message with the valid keys") {
     const std::string too_many = "f*" + std::to_string(KeyScript::kMaxCount + 1);
     const std::string too_late = "f@" + std::to_string(KeyScript::kMaxFrame + 1);
+    // A table, kept in rows (the layout would put one token on a line).
+    // clang-format off
     const char* const bad_tokens[] = {
         "q!",   "left", "ff",   "f*0",  "f*-1", "f*x",  "f*",   "f*2*3", "f*+2", "f*1.5",
         "f@",   "f@-1", "f@x",  "f@1@2", "f@3*2", "f@+1", "f@1e3", "*3",   "@5",   "*2@5",
         "99999999999999999999", "f*99999999999999999999", "f@99999999999999999999",
     };
+    // clang-format on
     std::vector<std::string> tokens(std::begin(bad_tokens), std::end(bad_tokens));
     tokens.push_back(too_many);
     tokens.push_back(too_late);

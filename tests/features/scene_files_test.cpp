@@ -93,6 +93,7 @@ const std::map<std::string, std::string> kEveryWorldKey{
     {"position_method", "\"baumgarte\""},
     {"position_rate", "0.3"},
     {"slop", "0.5"},
+    {"continuous", "false"},
 };
 
 // The keys each stage reads, as docs/scene_format.md tables them: the book's settings
@@ -121,6 +122,11 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
               "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
               "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
               "sleep_speed", "time_to_sleep"}},
+    {"s5_6", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
+              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
+              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
+              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
+              "sleep_speed", "time_to_sleep", "continuous"}},
 };
 
 std::string commaList(const std::vector<std::string>& words) {
@@ -141,6 +147,18 @@ std::vector<std::string> keysThisStageReads() {
 TEST_CASE("scene files: the stage reads exactly the world keys of its book project") {
     REQUIRE(kKeysOfStage.contains(STAGE_ID));
     CHECK(keysThisStageReads() == kKeysOfStage.at(STAGE_ID));
+}
+
+TEST_CASE("scene files: a body's \"bullet\" is read from 5.6 on and refused before, as any unknown key") {
+    const test::ScratchFolder folder("scene-bullet");
+    folder.write("scene.json", R"({"bodies": [{"shape": "circle", "center": [100, 100], "radius": 5, "bullet": true}]})");
+    const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "scene.json", "--frames 1"));
+#if __has_include("continuous.h")
+    CHECK(run.status == 0);
+#else
+    CHECK(run.status == 2);
+    CHECK(run.error_text.find("bodies[0].bullet") != std::string::npos);
+#endif
 }
 
 TEST_CASE("scene files: the program takes each world key the stage reads and refuses every other one") {

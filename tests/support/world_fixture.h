@@ -27,6 +27,9 @@ inline engine::WorldSettings world(bool movement, Vec2 gravity = engine::kGravit
 #if __has_include("islands.h")
     settings.sleep = false;  // 5.5: chapter 4's world never sleeps
 #endif
+#if __has_include("continuous.h")
+    settings.continuous = false;  // 5.6: chapter 4's world is swept by nothing
+#endif
     return settings;
 }
 
