@@ -145,7 +145,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
-    islands_.startStep();
+    islands_.startStep(shapes);
     if (world.solver == SolverKind::sequential_impulse) {
         return contact_solver_.step(shapes, broad_phase_, islands_, world, collisions_);
     }
@@ -167,7 +167,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             if (a.isResting() && b.isResting()) return false;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) return false;
-            islands_.touching(shapes, i, j, info->depth());
+            if (islands_.touching(shapes, i, j, info->depth())) broad_phase_.noteResting();
             if (last_pass) collisions_.push_back({i, j, *info});
             resolveCollision(a, b, *info, world, responses_[{i, j}]);
             return true;

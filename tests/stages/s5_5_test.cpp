@@ -3,7 +3,8 @@
 // arc, a shape asleep while it overlaps, a box asleep mid-tip, a pile left hanging when
 // its floor goes). With sleep off the stage is 5.4 bit for bit (the identity feature
 // test); with sleep on, every step is 5.4's up to the first in which a shape sleeps.
-// 5.4's own tests run on this stage too, sleep on (s5_5.s5_4_stage).
+// 5.4's own stage tests run on this stage too, sleep on (s5_5.s5_4_stage in
+// CMakeLists.txt), but for two that watch a resting scene's contacts: asleep, it has none.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -393,6 +394,73 @@ TEST_CASE("s5_5: a shape that spins in place does not sleep; one that floats sti
     run.page.steps(5 * kStepsPerSecond);
     CHECK_FALSE(run.asleep(0));
     CHECK(run.asleep(1));
+}
+
+TEST_CASE("s5_5: a shape that trembles in place, to and fro each step, does not sleep") {
+    // No gravity: a circle of radius 20 turned by 0.005 rad one step and back the next,
+    // and another moved 0.1 px one step and back the next. Neither strays: each is at
+    // most 0.1 px (20 * 0.005 at the rim) from where it was, under the drift allowed
+    // over a rest (3 px/s * 0.5 s / 10 = 0.15 px). But each moves 0.1 px in every step,
+    // at 0.1 * 60 = 6 px/s, twice the sleep speed.
+    WorldSettings world = engine::kBookWorld;
+    world.gravity = {};
+    Sleepy run(world);
+    engine::Circle& turning = run.page.core.add(engine::Circle({200, 200}, 20));
+    engine::Circle& shaking = run.page.core.add(engine::Circle({500, 200}, 20));
+    const double spin = 0.005 * kStepsPerSecond;  // rad/s
+    const double speed = 0.1 * kStepsPerSecond;   // px/s
+    for (int step = 0; step < 5 * kStepsPerSecond; ++step) {
+        const double sign = step % 2 == 0 ? 1.0 : -1.0;
+        turning.setAngularVelocity(sign * spin);
+        shaking.setVelocity({sign * speed, 0});
+        run.page.steps(1);
+        REQUIRE_FALSE(run.asleep(0));
+        REQUIRE_FALSE(run.asleep(1));
+    }
+    CHECK_THAT(turning.sleep().speed, test::near(6.0, 1e-6));
+    CHECK_THAT(shaking.sleep().speed, test::near(6.0, 1e-6));
+}
+
+TEST_CASE("s5_5: a shape's drift counts over the last time_to_sleep of its rest, not over all of it") {
+    // No gravity, no friction, the sequential impulse solver: two circles of radius 20
+    // that overlap by 0.01 px (inside the slop, so nothing pushes them apart: one
+    // island) float to the right together at 0.2 px/s. At 0.4 s the second is turned by
+    // a spin of 1 rad/s for one step (its rim moves 20 / 60 = 0.33 px): its rest starts
+    // again, and the island sleeps 0.5 s later, near 0.9 s. By then the first has
+    // drifted 0.9 * 0.2 = 0.18 px since its rest began, past the 0.15 px allowed; but
+    // within each half second of its rest only 0.1 px.
+    WorldSettings world = engine::kBookWorld;
+    world.gravity = {};
+    world.solver = engine::SolverKind::sequential_impulse;
+    Sleepy run(world);
+    engine::Circle& first = run.page.core.add(engine::Circle({200, 200}, 20, {.friction = 0}));
+    engine::Circle& second = run.page.core.add(engine::Circle({239.99, 200}, 20, {.friction = 0}));
+    first.setVelocity({0.2, 0});
+    second.setVelocity({0.2, 0});
+    const int kick = 24;
+    int asleep = -1;
+    for (int step = 1; step <= 2 * kStepsPerSecond && asleep < 0; ++step) {
+        second.setAngularVelocity(step == kick ? 1.0 : 0.0);
+        run.page.steps(1);
+        if (run.asleep(0)) asleep = step;
+    }
+    CHECK(run.island(0) == run.island(1));
+    CHECK(asleep > kick + 29);
+    CHECK(asleep <= kick + 32);
+}
+
+TEST_CASE("s5_5: a pile asleep costs no pair work: its pairs are passed over before their bound tests") {
+    for (engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        TwoIslands world(solver);
+        REQUIRE(world.stepUntilAllAsleep());
+        world.page.steps(1);
+        const engine::PairStatistics& pairs = world.page.core.physics().pairStatistics();
+        CHECK(pairs.narrow_tests == 0);
+        // At least the five contacts the piles rest on: four boxes on the floor, and the
+        // stack's two boxes on each other.
+        CHECK(pairs.slept_pairs >= 5);
+    }
 }
 
 TEST_CASE("s5_5: no shape sleeps while it overlaps another by more than the slop") {
