@@ -100,7 +100,7 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
         if (a.isResting() && b.isResting()) return false;
         const std::optional<CollisionInfo> info = narrowPhase(a, b);
         if (!info) return false;
-        islands.touching(shapes, i, j, info->depth());
+        if (islands.touching(shapes, i, j, info->depth())) broad_phase.noteResting();
         found.push_back({i, j, *info});
         ContactManifold manifold = contactManifold(a, b, *info);
         Contact contact{.a = i,

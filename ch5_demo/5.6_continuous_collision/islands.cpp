@@ -8,29 +8,66 @@
 namespace engine {
 
 namespace {
-// How fast a shape still moves, all told (islands.h): straight, turning at its farthest
-// point, and the overlap past the slop it would still have to be moved out of in a step.
-double sleepSpeed(const RigidShape& shape, double deepest, const WorldSettings& world) {
-    const double correction = std::max(0.0, deepest - world.slop) / world.dt;
-    return shape.velocity().length() + std::abs(shape.angularVelocity()) * shape.boundRadius() + correction;
+// How fast a shape moved in the step, all told (islands.h): straight and turning at its
+// farthest point, from where the step found it; and, with no correction to push it
+// out, the overlap past the slop it would have to leave within a step.
+double sleepSpeed(const RigidShape& shape, Vec2 start_center, double start_angle, double deepest,
+                  const WorldSettings& world) {
+    const double correction = world.positional_correction ? 0.0 : std::max(0.0, deepest - world.slop) / world.dt;
+    const double moved = shape.center().distance(start_center) / world.dt;
+    const double turned = std::abs(shape.angle() - start_angle) * shape.boundRadius() / world.dt;
+    return moved + turned + correction;
 }
 
-// How far the shape has gone since its rest began: its centre, and its farthest point
-// turning about it. A shape that starts to slide or tip from rest is slow for a long
-// while, but it goes on in one direction, where a resting one only trembles in place.
+// How far the shape has gone since its rest began, or since the last time_to_sleep of
+// it began (RigidShape::rest): its centre, and its farthest point turning about it. A
+// shape that starts to slide or tip from rest is slow for a long while, but it goes on
+// in one direction, where a resting one only trembles in place. Over the last window
+// only: a shape that creeps by a hair a second while its island is kept awake by
+// another would otherwise run out of allowance, and keep the island awake in turn.
 double driftSinceRest(const RigidShape& shape) {
     const SleepState& state = shape.sleep();
     if (state.rested_s == 0.0) return 0.0;
     return shape.center().distance(state.rest_center) + std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
 }
+
+// A steady creep at a tenth of the sleep speed, over the time to sleep: 0.15 px with
+// the defaults, where a box sliding from rest at 1.2 px/s^2 gets in half a second.
+double driftAllowed(const WorldSettings& world) { return world.sleep_speed * world.time_to_sleep / 10.0; }
 }  // namespace
 
-void Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
-    touches_.push_back({i, j, depth});
+void Islands::startStep(ShapeList shapes) {
+    const std::size_t count = shapes.size();
+    parent_.resize(count);
+    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+    deepest_.assign(count, 0.0);
+    held_.assign(count, 0);
+    step_start_center_.resize(shapes.size());
+    step_start_angle_.resize(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        step_start_center_[i] = shapes[i]->center();
+        step_start_angle_[i] = shapes[i]->angle();
+    }
+}
+
+bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double depth) {
+    // Each pass of the book's relaxation reports its pairs again: the islands are joined
+    // as they come, with no list to keep.
+    deepest_[i] = std::max(deepest_[i], depth);
+    deepest_[j] = std::max(deepest_[j], depth);
+    held_[i] = held_[j] = 1;
+    // Never through a static shape: it holds what lies on it, but carries no motion from
+    // one of them to another.
+    if (!shapes[i]->isStatic() && !shapes[j]->isStatic()) parent_[root(i)] = root(j);
     // An awake shape has reached a sleeping one: the sleeper's island must take part in
     // this very step, or the awake shape would sink into it as into a static wall.
-    if (shapes[i]->sleep().asleep) wakeIslandOf(shapes, i);
-    if (shapes[j]->sleep().asleep) wakeIslandOf(shapes, j);
+    bool woke = false;
+    for (const std::size_t shape : {i, j}) {
+        if (!shapes[shape]->sleep().asleep) continue;
+        wakeIslandOf(shapes, shape);
+        woke = true;
+    }
+    return woke;
 }
 
 std::size_t Islands::root(std::size_t i) {
@@ -41,19 +78,6 @@ std::size_t Islands::root(std::size_t i) {
 void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
     if (!world.sleep) return;
     const std::size_t count = shapes.size();
-    parent_.resize(count);
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
-    deepest_.assign(count, 0.0);
-    held_.assign(count, 0);
-    for (const Touch& touch : touches_) {
-        deepest_[touch.a] = std::max(deepest_[touch.a], touch.depth);
-        deepest_[touch.b] = std::max(deepest_[touch.b], touch.depth);
-        held_[touch.a] = held_[touch.b] = 1;
-        // Never through a static shape: it holds what lies on it, but carries no motion
-        // from one of them to another.
-        if (shapes[touch.a]->isStatic() || shapes[touch.b]->isStatic()) continue;
-        parent_[root(touch.a)] = root(touch.b);
-    }
     // Without gravity nothing falls, and a shape floating still is at rest.
     const bool falling_without_support = world.gravity != Vec2{};
     island_rested_.assign(count, std::numeric_limits<double>::infinity());
@@ -63,10 +87,10 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
         // The book's passes leave a resting box rocking on its corners, off the floor
         // every other step: a contact in this step or the last one holds it.
         const bool held = held_[i] || shape.sleep().held;
-        const bool resting = world.movement && (held || !falling_without_support) &&
-                             sleepSpeed(shape, deepest_[i], world) < world.sleep_speed &&
-                             driftSinceRest(shape) <= world.slop;
-        shape.rest(resting, held_[i], world.dt);
+        const double speed = sleepSpeed(shape, step_start_center_[i], step_start_angle_[i], deepest_[i], world);
+        const bool resting = world.movement && (held || !falling_without_support) && speed < world.sleep_speed &&
+                             driftSinceRest(shape) <= driftAllowed(world);
+        shape.rest(resting, held_[i], speed, world.dt, world.time_to_sleep);
         double& rested = island_rested_[root(i)];
         rested = std::min(rested, shape.sleep().rested_s);
     }

@@ -12,16 +12,20 @@
 // does not move: a box cannot sleep while the box under it still slides.
 //
 // The sleep rule (README.md derives the numbers, in px and s). A shape's sleep speed
-//     s = |v| + |w| r + max(0, d - slop) / dt
-// counts its linear speed, its spin times its extent (r, the bounding radius: how fast
-// its farthest point moves), and the correction it still needs (d, the deepest overlap
-// its contacts were found with this step; what lies past the slop has to be moved out
-// within a step, at that speed). A shape rests while s stays under the world's
-// sleep_speed, it is held by a contact in this step or the last (under gravity, a shape
-// that touches nothing is falling, however slowly it moves at the top of its arc), it
-// has not drifted farther than the slop since its rest began (a box that starts to
-// slide or tip from rest is slow for a long while, but does not stay put), and the
-// world moves at all.
+//     s = (|dc| + |da| r) / dt + (correction off: max(0, d - slop) / dt)
+// is what the shape really did in the step, correction and all: how far its centre
+// went (dc) and its farthest point turned (da, at the extent r, the bounding radius).
+// Its velocity would not do: under a pile's weight the book's passes leave a resting
+// shape with a velocity into the pile, which every step's correction takes back out
+// of its position, so that it stands still at 10 px/s. An overlap that the correction
+// works on moves the shape, and so counts; with the correction off nothing would ever
+// move it out, and the overlap past the slop (d, the deepest its contacts found) counts
+// as the speed it would take to leave it within a step. A shape rests while s stays
+// under the world's sleep_speed, it is held by a contact in this step or the last
+// (under gravity, a shape that touches nothing is falling, however slowly it moves at
+// the top of its arc), it has not drifted farther than sleep_speed * time_to_sleep / 10
+// within the last time_to_sleep of its rest (a box that starts to slide or tip from
+// rest is slow for a long while, but does not stay put), and the world moves at all.
 // An island falls asleep when every shape in it has rested for time_to_sleep; its
 // velocities are then set to 0, so that it wakes from rest.
 //
@@ -45,8 +49,9 @@ public:
     // The physics reports, for each pair its step finds touching (every relaxation
     // pass, or the solver's one look), the pair and its depth. A sleeping shape touched
     // by an awake one wakes its island here, before anything resolves the pair.
-    void startStep() { touches_.clear(); }
-    void touching(ShapeList shapes, std::size_t i, std::size_t j, double depth);
+    void startStep(ShapeList shapes);
+    // Returns whether it woke an island.
+    bool touching(ShapeList shapes, std::size_t i, std::size_t j, double depth);
 
     // After the shapes' motion: the islands of the step's contacts, each awake shape's
     // rest timer, and the islands that have rested long enough fall asleep.
@@ -61,14 +66,11 @@ public:
     static std::size_t awakeCount(ShapeList shapes);
 
 private:
-    struct Touch {
-        std::size_t a, b;
-        double depth;
-    };
     std::size_t root(std::size_t i);
     void wakeLabel(ShapeList shapes, std::uint64_t island);
 
-    std::vector<Touch> touches_;
+    std::vector<Vec2> step_start_center_;      // each shape as the step found it
+    std::vector<double> step_start_angle_;
     std::vector<std::size_t> parent_;          // union-find over the step's contacts
     std::vector<double> deepest_;              // px, each shape's deepest overlap this step
     std::vector<std::uint8_t> held_;           // 1: the shape touches something

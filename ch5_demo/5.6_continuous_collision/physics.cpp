@@ -141,11 +141,26 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
 
 }  // namespace
 
+// The record of the pair just resolved. Looked up afresh, a thousand pairs would cost a
+// walk down the map's tree, some ten comparisons and as many cache misses, for every
+// resolution. But every broad phase meets a pass's pairs in ascending order, and the
+// pairs a pass resolves are mostly those the pass before resolved: so the pair sits
+// at, or a few entries after, the place where the last one was found. Walking on from
+// there costs a comparison per entry passed, and a pair not yet in the record is put
+// in at that place, which std::map takes as a hint (constant time). A pair met out of
+// order would only cost the tree walk: try_emplace checks the hint. The map ends up
+// holding the same sums, added in the same order: only the time changes.
+PairResponse& Physics::responseOf(PairKey pair) {
+    while (next_response_ != responses_.end() && next_response_->first < pair) ++next_response_;
+    next_response_ = responses_.try_emplace(next_response_, pair);
+    return (next_response_++)->second;
+}
+
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
-    islands_.startStep();
+    islands_.startStep(shapes);
     if (world.solver == SolverKind::sequential_impulse) {
         return contact_solver_.step(shapes, broad_phase_, islands_, world, collisions_);
     }
@@ -153,6 +168,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
         // The record keeps what the last pass found.
         const bool last_pass = pass + 1 == world.relaxation_iterations;
+        next_response_ = responses_.begin();
         // Every pair is resolved as soon as it is found, so the pairs after it already
         // see the shapes where that correction left them. The broad phase walks each
         // row's partners in ascending order, so pairs are met in the book's order
@@ -167,9 +183,9 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             if (a.isResting() && b.isResting()) return false;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) return false;
-            islands_.touching(shapes, i, j, info->depth());
+            if (islands_.touching(shapes, i, j, info->depth())) broad_phase_.noteResting();
             if (last_pass) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world, responses_[{i, j}]);
+            resolveCollision(a, b, *info, world, responseOf({i, j}));
             return true;
         });
         // The book runs every pass. But a pass that changed nothing left every shape's

@@ -85,8 +85,13 @@ public:
     Islands& islands() { return islands_; }
 
 private:
+    // The record of `pair`, made when the step first resolves it (physics.cpp).
+    PairResponse& responseOf(PairKey pair);
+
     std::vector<Collision> collisions_;
     std::map<PairKey, PairResponse> responses_;
+    // Where the pass's next pair most likely sits in the record (responseOf).
+    std::map<PairKey, PairResponse>::iterator next_response_;
     BroadPhase broad_phase_;
     ContactSolver contact_solver_;
     Islands islands_;

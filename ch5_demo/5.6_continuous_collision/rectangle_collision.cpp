@@ -38,12 +38,15 @@ struct SupportPoint {
 // normal `normal`, or nothing when no corner is behind it. A corner exactly on the
 // face is not behind it: rectangles that only touch do not collide.
 std::optional<SupportPoint> findSupportPoint(const std::array<Vec2, 4>& corners, Vec2 normal, Vec2 on_face) {
-    std::optional<SupportPoint> deepest;
+    // Starting at depth 0, one comparison both keeps out the corners not behind the
+    // face and picks the deepest: the same corner as asking the two apart, one branch less.
+    SupportPoint deepest{on_face, 0.0};
     for (Vec2 corner : corners) {
         const double depth = (on_face - corner).dot(normal);
-        if (depth > 0 && (!deepest || depth > deepest->depth)) deepest = SupportPoint{corner, depth};
+        if (depth > deepest.depth) deepest = SupportPoint{corner, depth};
     }
-    return deepest;
+    if (deepest.depth > 0) return deepest;
+    return std::nullopt;
 }
 
 struct Penetration {

@@ -44,9 +44,11 @@ enum class ShapeType { Rectangle, Circle };
 struct SleepState {
     bool asleep = false;
     double rested_s = 0.0;
+    double speed = 0.0;  // px/s, its sleep speed in the last step it was awake
     bool held = false;  // it touched something in the last step
     Vec2 rest_center;   // where it was, and how it was turned, when its rest began
-    double rest_angle = 0.0;
+    double rest_angle = 0.0;  // (or when the last window of its rest began)
+    double noted_at_s = 0.0;  // s: the rest time at which they were noted
     std::uint64_t island = 0;
 };
 
@@ -115,14 +117,18 @@ public:
         sleep_.rested_s = 0.0;
     }
     // Adds dt to the rest timer while `resting`, and starts it again from 0 when not;
-    // `held`: the shape touched something in this step.
-    void rest(bool resting, bool held, double dt) {
-        if (resting && sleep_.rested_s == 0.0) {
+    // `held`: the shape touched something in this step. Where the shape stands is noted
+    // when its rest begins, and again each `window` of rest, so that its drift is
+    // measured over the last window at most.
+    void rest(bool resting, bool held, double speed, double dt, double window) {
+        if (resting && (sleep_.rested_s == 0.0 || sleep_.rested_s - sleep_.noted_at_s >= window)) {
             sleep_.rest_center = center_;
             sleep_.rest_angle = angle_;
+            sleep_.noted_at_s = sleep_.rested_s;
         }
         sleep_.rested_s = resting ? sleep_.rested_s + dt : 0.0;
         sleep_.held = held;
+        sleep_.speed = speed;
     }
     void joinIsland(std::uint64_t island) { sleep_.island = island; }
 
