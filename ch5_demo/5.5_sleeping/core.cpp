@@ -66,21 +66,11 @@ void Core::changeSettings(const WorldSettings& settings) {
     wakeAll();
 }
 
-void Core::toggleMovement() {
+// A flag flipped is a change of the world like any other (changeSettings): it wakes
+// every shape.
+void Core::toggleSetting(bool WorldSettings::*flag) {
     WorldSettings changed = settings_;
-    changed.movement = !changed.movement;
-    changeSettings(changed);
-}
-
-void Core::togglePositionalCorrection() {
-    WorldSettings changed = settings_;
-    changed.positional_correction = !changed.positional_correction;
-    changeSettings(changed);
-}
-
-void Core::toggleSleep() {
-    WorldSettings changed = settings_;
-    changed.sleep = !changed.sleep;
+    changed.*flag = !(changed.*flag);
     changeSettings(changed);
 }
 

@@ -76,11 +76,11 @@ public:
     // sleeping pile at rest under the old settings need not be at rest under the new.
     void changeSettings(const WorldSettings& settings);
     // The comma key: starts and stops every shape's motion.
-    void toggleMovement();
+    void toggleMovement() { toggleSetting(&WorldSettings::movement); }
     // The M key: turns positional correction on and off.
-    void togglePositionalCorrection();
+    void togglePositionalCorrection() { toggleSetting(&WorldSettings::positional_correction); }
     // The Y key: turns sleeping on and off.
-    void toggleSleep();
+    void toggleSleep() { toggleSetting(&WorldSettings::sleep); }
 
     // Sleeping (islands.h): the keys wake what they change. A shape's island wakes with
     // it; a static shape wakes everything.
@@ -106,6 +106,7 @@ public:
     const Physics& physics() const { return physics_; }
 
 private:
+    void toggleSetting(bool WorldSettings::*flag);
     bool isOutOfBounds(const RigidShape& shape) const;
     void removeOutOfBounds();
     void updateUIEcho();
