@@ -39,6 +39,7 @@ function(add_stage id)
     stage_test_program(${id}_tests ${id} ${id}_engine ${program})
     # Every test file includes Catch2's 17,000-line header: parse it once for every stage.
     target_precompile_headers(${id}_tests REUSE_FROM ${catch_pch})
+    test_files_together(${id}_tests)
     add_custom_target(${id} DEPENDS ${program} ${id}_tests)
 
     foreach(feature IN LISTS STAGE_FEATURES)
@@ -132,6 +133,22 @@ function(stage_test_program target id engine program)
     STAGE_ID="${id}" STAGE_PROGRAM="$<TARGET_FILE:${program}>"
     SCENE_LIBRARY_DIR="${PROJECT_SOURCE_DIR}/ch5_demo/scenes"
     BENCH_SCENES_DIR="${PROJECT_SOURCE_DIR}/bench/scenes")
+endfunction()
+
+# A stage's test files compiled together, as one translation unit (CMake's unity build).
+# File by file, each reads the precompiled Catch2 header, the stage's headers and the test
+# support headers again and compiles their inline functions again, which is most of what a
+# test file costs; together they do that once: 5.4's 30 test files take 28 CPU s instead
+# of 112 (g++ 12, from scratch). Each test file keeps its own names in a namespace named after
+# it (movement_test, s5_4_test), so two files' kDt or demoWorld never meet.
+# -DPHYSICS_TEST_FILES_PER_UNIT=1 compiles each file alone again, the quicker rebuild while
+# one test file is being edited (any other number: that many files a unit).
+set(PHYSICS_TEST_FILES_PER_UNIT 0 CACHE STRING
+  "Test files per translation unit of a stage's test program (0: all of them, 1: each alone)")
+function(test_files_together target)
+  if(NOT PHYSICS_TEST_FILES_PER_UNIT EQUAL 1)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PHYSICS_TEST_FILES_PER_UNIT})
+  endif()
 endfunction()
 
 # The tests check, the engine computes: the engine keeps the build's -O3, the test files

@@ -14,6 +14,8 @@
 #include "rectangle.h"
 #include "world_fixture.h"
 
+namespace angular_impulse_test {
+
 using engine::Vec2;
 
 namespace {
@@ -242,3 +244,5 @@ TEST_CASE("angular impulse: a resting box rocks a little and never quite settles
     CHECK(spin > 1e-6);  // rad/s: still rocking after 150 s
     WARN("resting box after 150 s: angle up to " << turn << " rad, angular velocity up to " << spin << " rad/s");
 }
+
+}  // namespace angular_impulse_test

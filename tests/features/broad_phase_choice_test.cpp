@@ -21,6 +21,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace broad_phase_choice_test {
+
 namespace fs = std::filesystem;
 using browser::BodyDescription;
 using browser::Key;
@@ -407,3 +409,5 @@ TEST_CASE("broad phase choice: the grid hands on far fewer pairs than testing th
     }
 }
 
+
+}  // namespace broad_phase_choice_test

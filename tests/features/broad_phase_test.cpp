@@ -12,6 +12,8 @@
 #include "random_scene.h"
 #include "rectangle.h"
 
+namespace broad_phase_test {
+
 using engine::Vec2;
 
 namespace {
@@ -142,3 +144,5 @@ TEST_CASE("broad phase: never misses a touching pair; its false-positive share, 
              << 100.0 * count->falsePositiveShare() << " %");
     }
 }
+
+}  // namespace broad_phase_test

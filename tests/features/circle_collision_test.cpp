@@ -7,6 +7,8 @@
 #include "collision_info.h"
 #include "physics.h"
 
+namespace circle_collision_test {
+
 using engine::Vec2;
 using test::requireInfo;
 
@@ -89,3 +91,5 @@ TEST_CASE("circle collision: for two circles the broad phase is already exact") 
         CHECK(first->boundTest(*second) == first->collisionTest(*second).has_value());
     }
 }
+
+}  // namespace circle_collision_test

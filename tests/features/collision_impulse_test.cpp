@@ -16,6 +16,8 @@
 #include "world_fixture.h"
 #include "world_measures.h"
 
+namespace collision_impulse_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -250,3 +252,5 @@ TEST_CASE("collision impulse: the frame no longer draws the collision info") {
     }
     CHECK(orange == 0);
 }
+
+}  // namespace collision_impulse_test

@@ -10,6 +10,8 @@
 #include "legend_color.h"
 #include "stage_fixture.h"
 
+namespace collision_overlay_test {
+
 #if __has_include("world_settings.h")
 // Chapter 4: the book's world without positional correction, and with movement off
 // (5.1's demo starts it on), so that the two circles stay where they are: they touch at
@@ -56,3 +58,5 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
     });
     CHECK(counted != document.legend.end());
 }
+
+}  // namespace collision_overlay_test

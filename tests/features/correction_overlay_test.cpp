@@ -8,6 +8,8 @@
 #include "near.h"
 #include "world_fixture.h"
 
+namespace correction_overlay_test {
+
 TEST_CASE("correction overlay: the move of one pass, ten times longer, from the moved centre") {
     // Movement off (5.1's demo starts it on): only the correction moves shapes.
     engine::WorldSettings settings = test::world(false);
@@ -37,3 +39,5 @@ TEST_CASE("correction overlay: the move of one pass, ten times longer, from the 
     CHECK(pixels.at(250, 100) == correction);
     CHECK(pixels.at(257, 100) == browser::colors::kWhite);
 }
+
+}  // namespace correction_overlay_test

@@ -7,6 +7,8 @@
 #include "near.h"
 #include "stage_fixture.h"
 
+namespace engine_loop_test {
+
 namespace {
 constexpr double kStep = 1000.0 / 60.0;
 constexpr double kExact = 1e-9;  // ms
@@ -90,3 +92,5 @@ TEST_CASE("engine loop: the core keeps time with the browser's clock") {
         checkUpdatesRan(page, sinker, 3 * k - 1);
     }
 }
+
+}  // namespace engine_loop_test

@@ -29,6 +29,8 @@
 #include "closed_box.h"
 #include "world_fixture.h"
 
+namespace extremes_test {
+
 using engine::Circle;
 using engine::Rectangle;
 using engine::Vec2;
@@ -776,3 +778,5 @@ TEST_CASE("extremes: tunnelling: a ball passes a thin wall from half the speed t
         }
     }
 }
+
+}  // namespace extremes_test

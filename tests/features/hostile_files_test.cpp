@@ -15,6 +15,8 @@
 
 #include "stage_program.h"
 
+namespace hostile_files_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -202,3 +204,5 @@ TEST_CASE("hostile input: 5.4's contacts are in the budget, and running out of m
     CHECK_THAT(starved.error_text, Catch::StartsWith("out of memory:"));
     CHECK_FALSE(fs::exists(folder.path / "out"));
 }
+
+}  // namespace hostile_files_test

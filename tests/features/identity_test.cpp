@@ -21,6 +21,8 @@
 #include "core.h"
 #include "scene_io.h"
 
+namespace identity_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -138,3 +140,5 @@ TEST_CASE("identity: record the fingerprints", "[.record]") {
                     static_cast<unsigned long long>(fingerprint(engine::loadScene(sceneFile(name)))));
     }
 }
+
+}  // namespace identity_test

@@ -9,6 +9,8 @@
 #include "near.h"
 #include "world_fixture.h"
 
+namespace impulse_overlay_test {
+
 TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's law of restitution") {
     // Movement off (5.1's demo starts it on): only the response acts.
     engine::WorldSettings settings = test::world(false);
@@ -41,3 +43,5 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
     CHECK(pixels.at(270, 100) == normal_impulse);
     CHECK(pixels.at(285, 100) == browser::colors::kWhite);
 }
+
+}  // namespace impulse_overlay_test

@@ -6,6 +6,8 @@
 #include "near.h"
 #include "world_fixture.h"
 
+namespace lever_arm_overlay_test {
+
 TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres to the contact the impulses act at") {
     // Movement off (5.1's demo starts it on): only the response acts.
     engine::WorldSettings settings = test::world(false);
@@ -35,3 +37,5 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     // The first arm runs along the row y = 100.5 from x = 200.5 to 218.5.
     CHECK(page.window.document.canvas.pixels().at(205, 100) == lever);
 }
+
+}  // namespace lever_arm_overlay_test

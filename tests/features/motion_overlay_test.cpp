@@ -10,6 +10,8 @@
 #include "legend_color.h"
 #include "world_fixture.h"
 
+namespace motion_overlay_test {
+
 TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as far as half a second turns") {
     // Movement off (5.1's demo starts it on), so nothing moves.
     test::WorldFixture page(test::world(false));
@@ -39,3 +41,5 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     const browser::Vec2 before = on_arc(-std::acos(-1.0));
     CHECK(pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)) == browser::colors::kWhite);
 }
+
+}  // namespace motion_overlay_test

@@ -15,6 +15,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace movement_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -380,3 +382,5 @@ TEST_CASE("movement: F and G draw their random numbers in the book's order") {
     CHECK(ball.restitution() == book.next());
     CHECK(ball.velocity() == nextVelocity());
 }
+
+}  // namespace movement_test

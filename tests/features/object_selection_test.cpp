@@ -8,6 +8,8 @@
 #include "rectangle.h"
 #include "stage_fixture.h"
 
+namespace object_selection_test {
+
 using browser::Key;
 
 TEST_CASE("object selection: digit keys select an existing object, and only one") {
@@ -70,3 +72,5 @@ TEST_CASE("object selection: every key on an empty world leaves it empty, and th
     }
     CHECK(drawn == 0);
 }
+
+}  // namespace object_selection_test

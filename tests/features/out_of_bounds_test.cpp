@@ -16,6 +16,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace out_of_bounds_test {
+
 using engine::Circle;
 using engine::Vec2;
 
@@ -116,3 +118,5 @@ TEST_CASE("out of bounds: the selection stays on its index, and goes back to obj
         CHECK(page.core.selectedIndex() == c.then_selected);
     }
 }
+
+}  // namespace out_of_bounds_test

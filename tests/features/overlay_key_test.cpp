@@ -9,6 +9,8 @@
 #include "png_io.h"
 #include "stage_program.h"
 
+namespace overlay_key_test {
+
 namespace {
 
 // final.png of a two-frame run of the stage's program with `arguments`.
@@ -34,3 +36,5 @@ TEST_CASE("overlay key: --overlay and the key t show the same overlay; t again t
     CHECK(twice.rgba == book.rgba);
     CHECK(option_then_key.rgba == book.rgba);
 }
+
+}  // namespace overlay_key_test

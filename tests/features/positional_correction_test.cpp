@@ -15,6 +15,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace positional_correction_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -211,3 +213,5 @@ TEST_CASE("positional correction: 20 shapes created at one point part within 200
                                                     << steps_taken.back() << " steps, median "
                                                     << steps_taken[steps_taken.size() / 2]);
 }
+
+}  // namespace positional_correction_test

@@ -19,6 +19,8 @@
 #include "physics.h"
 #include "rectangle.h"
 
+namespace rectangle_circle_collision_test {
+
 using engine::Vec2;
 using test::requireInfo;
 
@@ -168,3 +170,5 @@ TEST_CASE("rectangle circle collision: a rectangle thinner than the spacing of d
     CHECK(info->depth() == 10);
     CHECK(info->normal() == Vec2{0, 0});
 }
+
+}  // namespace rectangle_circle_collision_test

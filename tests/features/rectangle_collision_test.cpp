@@ -14,6 +14,8 @@
 #include "physics.h"
 #include "rectangle.h"
 
+namespace rectangle_collision_test {
+
 using engine::Vec2;
 using test::requireInfo;
 
@@ -110,3 +112,5 @@ TEST_CASE("rectangle collision: 40,000 random turned pairs agree with the projec
     CHECK(count.apart > 4'000);
     CHECK(count.borderline < 10);
 }
+
+}  // namespace rectangle_collision_test

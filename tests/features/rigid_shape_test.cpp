@@ -7,6 +7,8 @@
 #include "rectangle.h"
 #include "shape_text.h"
 
+namespace rigid_shape_test {
+
 using engine::Vec2;
 
 namespace {
@@ -55,3 +57,5 @@ TEST_CASE("rigid shape: a failing check prints shapes and vectors by their numbe
     const engine::RigidShape& shape = ball;
     CHECK(Catch::Detail::stringify(shape) == "circle of radius 5 at (10, 20)");
 }
+
+}  // namespace rigid_shape_test

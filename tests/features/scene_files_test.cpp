@@ -29,6 +29,8 @@
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
 
+namespace scene_files_test {
+
 namespace fs = std::filesystem;
 using engine::Vec2;
 
@@ -576,3 +578,5 @@ TEST_CASE("hostile input: at every corner of the ranges a moving body's inverse 
         CHECK(std::isfinite(1 / shape.invInertia()));  // the inertia itself
     }
 }
+
+}  // namespace scene_files_test

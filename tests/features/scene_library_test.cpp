@@ -29,6 +29,8 @@
 #include "world_fixture.h"
 #include "world_measures.h"
 
+namespace scene_library_test {
+
 namespace fs = std::filesystem;
 using engine::Vec2;
 using oracle::depth;
@@ -458,3 +460,5 @@ TEST_CASE("scene library: book_demo: the book's four platforms, and 20 shapes wi
         CHECK(body.angular_velocity == 0);
     }
 }
+
+}  // namespace scene_library_test

@@ -9,6 +9,8 @@
 #include "near.h"
 #include "rectangle.h"
 
+namespace shape_motion_test {
+
 using engine::Vec2;
 
 namespace {
@@ -85,3 +87,5 @@ TEST_CASE("shape motion: a circle's reference point goes round its centre") {
     requireNear(ball.startpoint(), {0, 30});
     CHECK(ball.center() == Vec2{0, 25});
 }
+
+}  // namespace shape_motion_test

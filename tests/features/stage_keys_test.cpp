@@ -26,6 +26,8 @@
 #define STAGE_HAS_WORLD 0  // chapter 1: a canvas and the user control script, no world
 #endif
 
+namespace stage_keys_test {
+
 using browser::Key;
 
 namespace {
@@ -124,3 +126,5 @@ TEST_CASE("stage keys: a key script pressing any other key is refused, nothing w
         CHECK(folder.files() == std::vector<std::string>{"stderr.txt", "stdout.txt"});
     }
 }
+
+}  // namespace stage_keys_test

@@ -12,6 +12,8 @@
 #include "rectangle.h"
 #include "stage_fixture.h"
 
+namespace ui_echo_test {
+
 using browser::Key;
 
 namespace {
@@ -93,3 +95,5 @@ TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
     }
     CHECK(lines <= kPanelLines);
 }
+
+}  // namespace ui_echo_test

@@ -9,6 +9,8 @@
 #include "rectangle.h"
 #include "stage_fixture.h"
 
+namespace user_control_move_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -80,3 +82,5 @@ TEST_CASE("user control: a world of one object takes every key without leaving t
     page.frame();
     CHECK(page.window.document.ui_echo.find("Id: 0\n") != std::string::npos);
 }
+
+}  // namespace user_control_move_test

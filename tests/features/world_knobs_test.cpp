@@ -25,6 +25,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace world_knobs_test {
+
 namespace fs = std::filesystem;
 using browser::BodyDescription;
 using browser::Key;
@@ -558,3 +560,5 @@ TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as 
           "(fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)\n");
     CHECK(folder.files() == std::vector<std::string>{"scene.json", "stderr.txt", "stdout.txt"});
 }
+
+}  // namespace world_knobs_test

@@ -8,6 +8,8 @@
 #include "near.h"
 #include "user_control.h"
 
+namespace s1_1_test {
+
 namespace {
 
 struct InkBox {  // the smallest box around every pixel that is not white
@@ -128,3 +130,5 @@ TEST_CASE("s1_1: README walkthrough: each press draws one more outline") {
         before = after;
     }
 }
+
+}  // namespace s1_1_test

@@ -10,6 +10,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s2_1_test {
+
 using browser::Key;
 
 TEST_CASE("s2_1: F creates a 10-40 px rectangle centred in the top-left 80% of the canvas") {
@@ -88,3 +90,5 @@ TEST_CASE("s2_1: README walkthrough: the selected shape turns red, the echo name
     CHECK(red > 0);
     CHECK(blue > 0);
 }
+
+}  // namespace s2_1_test

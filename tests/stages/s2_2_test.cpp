@@ -14,6 +14,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s2_2_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -107,3 +109,5 @@ TEST_CASE("s2_2: README walkthrough: the shapes sink, and the fixed one stays wh
     CHECK(page.core.object(5).center().y > first_at);
     CHECK(page.core.object(7).center().y > third_at);
 }
+
+}  // namespace s2_2_test

@@ -15,6 +15,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s3_1_test {
+
 using browser::Key;
 using engine::Vec2;
 
@@ -161,3 +163,5 @@ TEST_CASE("s3_1: README walkthrough: green while the bounding circles overlap, a
     test::playScript(page, "5 e*2 0", 1);
     CHECK_FALSE(reported(page.core.physics(), 5, 6));
 }
+
+}  // namespace s3_1_test

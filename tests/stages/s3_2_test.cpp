@@ -10,6 +10,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s3_2_test {
+
 using engine::Vec2;
 
 TEST_CASE("s3_2: rectangles report no collision yet, with rectangles or circles") {
@@ -88,3 +90,5 @@ TEST_CASE("s3_2: README walkthrough: the two circles collide, the rectangles rep
     CHECK_THAT(found[0].info.depth(), test::near(first.radius() + second.radius() - 30.0, 1e-12));
     CHECK_THAT(found[0].info.normal(), test::near(Vec2{1, 0}, 1e-12));
 }
+
+}  // namespace s3_2_test

@@ -12,6 +12,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s3_3_test {
+
 TEST_CASE("s3_3: a rectangle and a circle still report no collision") {
     const engine::Rectangle box({100, 100}, 40, 20);
     const engine::Circle ball({100, 100}, 10);
@@ -50,3 +52,5 @@ TEST_CASE("s3_3: README walkthrough: the collision line of two rectangles follow
     // (its start, its depth) is no longer the one before.
     CHECK((after->start() != before->start() || after->depth() != before->depth()));
 }
+
+}  // namespace s3_3_test

@@ -10,6 +10,8 @@
 #include "stage_fixture.h"
 #include "walkthrough.h"
 
+namespace s3_4_test {
+
 namespace {
 
 std::optional<engine::CollisionInfo> infoOf(const engine::Physics& physics, std::size_t first, std::size_t second) {
@@ -44,3 +46,5 @@ TEST_CASE("s3_4: README walkthrough: turning the circle leaves the line, turning
     REQUIRE(box_turned.has_value());
     CHECK_FALSE(same(*box_turned, *start));
 }
+
+}  // namespace s3_4_test

@@ -13,6 +13,8 @@
 #include "walkthrough.h"
 #include "world_fixture.h"
 
+namespace s4_1_test {
+
 using engine::Vec2;
 
 TEST_CASE("s4_1: the cursor and the borders are static and stay put with movement on") {
@@ -92,3 +94,5 @@ TEST_CASE("s4_1: README walkthrough: both fall under gravity, the circle flies a
     // away, so within the run the circle is still rising.
     CHECK(test::stateAt(rows, 119, 6).cy < test::stateAt(rows, 60, 6).cy);
 }
+
+}  // namespace s4_1_test

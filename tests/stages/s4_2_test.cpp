@@ -12,6 +12,8 @@
 #include "walkthrough.h"
 #include "world_fixture.h"
 
+namespace s4_2_test {
+
 using engine::Vec2;
 
 TEST_CASE("s4_2: shapes that meet are kept apart, but keep their velocities") {
@@ -78,3 +80,5 @@ TEST_CASE("s4_2: README walkthrough: a blob of overlapping shapes opens until no
     test::playScript(page, "m", 30);
     CHECK(overlapping() == 0);
 }
+
+}  // namespace s4_2_test

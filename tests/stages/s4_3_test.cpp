@@ -15,6 +15,8 @@
 #include "walkthrough.h"
 #include "world_fixture.h"
 
+namespace s4_3_test {
+
 using engine::Vec2;
 
 TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), kept by a reset") {
@@ -97,3 +99,5 @@ TEST_CASE("s4_3: README walkthrough: the shapes land on the platform, slow down,
         CHECK(std::abs(state(119, shape).vx) < std::abs(state(30, shape).vx));
     }
 }
+
+}  // namespace s4_3_test

@@ -15,6 +15,8 @@
 #include "walkthrough.h"
 #include "world_fixture.h"
 
+namespace s4_4_test {
+
 using engine::Vec2;
 
 TEST_CASE("s4_4: the scene has two turned static platforms, kept by a reset") {
@@ -85,3 +87,5 @@ TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns a
     // The box has turned by more than half a radian in its landing.
     CHECK(std::abs(state(last, 8).angle) > 0.5);
 }
+
+}  // namespace s4_4_test

@@ -20,6 +20,8 @@
 #include "world_fixture.h"
 #include "book_scene.h"
 
+namespace s5_1_test {
+
 using engine::Vec2;
 
 namespace {
@@ -284,3 +286,5 @@ TEST_CASE("s5_1: the README's key script makes three boxes and three balls at on
     REQUIRE(moving > 0);
     CHECK_THAT(sum / moving, test::near(250 * (std::sqrt(2.0) + std::log(1 + std::sqrt(2.0))) / 3, 60));
 }
+
+}  // namespace s5_1_test

@@ -15,6 +15,8 @@
 #include "stage_program.h"
 #include "world_fixture.h"
 
+namespace s5_2_test {
+
 namespace {
 
 // Three still balls of radius 10: two 22 px apart (their circles miss by 2 px, but
@@ -102,3 +104,5 @@ TEST_CASE("s5_2: README walkthrough: H at frame 120 stirs the rain up to the spe
     CHECK(after.mean < 1.03 * 191.3);
     CHECK(after.largest < 354);
 }
+
+}  // namespace s5_2_test

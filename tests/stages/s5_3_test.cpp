@@ -8,6 +8,8 @@
 #include "near.h"
 #include "stage_program.h"
 
+namespace s5_3_test {
+
 // The README's "Try it": tunnelling.json with 4 sub-steps, where the fast ball bounces
 // back too. At 1500 px/s a step of 1/60 s carries it 25 px, more than its 16 px diameter
 // and the 4 px wall together, so with one step it is never seen overlapping the wall;
@@ -41,3 +43,5 @@ TEST_CASE("s5_3: README: with 4 sub-steps the fast ball bounces off the thin wal
     CHECK_THAT(last_x, test::near(68, 1e-6));
     CHECK_THAT(last_vx, test::near(0, 1e-9));
 }
+
+}  // namespace s5_3_test

@@ -21,6 +21,8 @@
 #include "world_from_scene.h"
 #include "world_measures.h"
 
+namespace s5_4_test {
+
 using engine::Vec2;
 using engine::WorldSettings;
 namespace fs = std::filesystem;
@@ -505,3 +507,5 @@ TEST_CASE("s5_4: the overlay's faces and totals: the platform's top face is the 
     const double pushes = contact.points[0].normal_impulse + contact.points[1].normal_impulse;
     CHECK_THAT(pushes, test::near(kG * kDt, 1e-6));
 }
+
+}  // namespace s5_4_test

@@ -23,6 +23,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace s5_5_test {
+
 using engine::Vec2;
 using engine::WorldSettings;
 namespace fs = std::filesystem;
@@ -571,3 +573,5 @@ TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sl
     world.page.core.runGameLoop();
     CHECK(world.page.window.document.ui_echo.find("  Sleeping: true, awake 4/4\n") != std::string::npos);
 }
+
+}  // namespace s5_5_test

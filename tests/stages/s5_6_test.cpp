@@ -24,6 +24,8 @@
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
+namespace s5_6_test {
+
 using engine::Vec2;
 using engine::WorldSettings;
 namespace fs = std::filesystem;
@@ -304,3 +306,5 @@ TEST_CASE("s5_6: P turns continuous collision off and on live") {
 }
 
 
+
+}  // namespace s5_6_test
