@@ -10,74 +10,120 @@
 #            the map, each changed by two letters, must then be reported missing (exit
 #            0 when all of them are, else 1)
 # Each problem is one line naming the map's row and the name.
-set -uo pipefail
+#
+# One pass in Python, each file read once: the check runs for every stage in every test
+# run, and a grep per name (some 120 a map) cost seconds a stage on a busy machine.
+exec python3 - "$@" <<'PYTHON'
+import os
+import re
+import sys
 
-mutate=no
-if [[ "${1:-}" == --mutated ]]; then mutate=yes; shift; fi
-folder=${1:?usage: check_name_map.sh [--mutated] STAGE_FOLDER}
-map="$folder/names.md"
-[[ -f "$map" ]] || { echo "$map: no such file"; exit 1; }
+arguments = sys.argv[1:]
+mutate = bool(arguments) and arguments[0] == "--mutated"
+if mutate:
+    arguments = arguments[1:]
+if not arguments:
+    print("usage: check_name_map.sh [--mutated] STAGE_FOLDER", file=sys.stderr)
+    sys.exit(1)
+folder = arguments[0]
+map_path = f"{folder}/names.md"
+if not os.path.isfile(map_path):
+    print(f"{map_path}: no such file")
+    sys.exit(1)
 
-# A name as the map writes it, changed so that it can be nowhere: Zq after its last
-# part, or before a file name's extension.
-mutated() {
-  local name=$1
-  if [[ "$name" =~ ^(.*)(\.(h|cpp|json))$ ]]; then echo "${BASH_REMATCH[1]}Zq${BASH_REMATCH[2]}"; else echo "${name}Zq"; fi
-}
+WORD = re.compile(r"\w", re.ASCII)
+texts = {}  # path -> its text, None when it cannot be read
 
-# Whether `name` is in one of the files: as written, or each of its parts.
-found_in() {
-  local name=$1; shift
-  grep -qwF -- "$name" "$@" 2>/dev/null && return 0
-  local part parts=${name//::/ }
-  for part in ${parts//./ }; do
-    grep -qwF -- "$part" "$@" 2>/dev/null || return 1
-  done
-  return 0
-}
 
-# One line a problem; the --mutated run counts them only.
-report() { [[ $mutate == yes ]] || echo "$map:$line_number: $*"; }
+def text_of(path):
+    if path not in texts:
+        try:
+            with open(path, encoding="utf-8", errors="replace") as file:
+                texts[path] = file.read()
+        except OSError:
+            texts[path] = None
+    return texts[path]
 
-checked=0 missing=0 line_number=0
-while IFS= read -r line; do
-  line_number=$((line_number + 1))
-  [[ "$line" == "| "* && "$line" != "| book |"* && "$line" != "| --- "* ]] || continue
-  IFS='|' read -r _ book ours in note <<<"$line"
-  files=()
-  for quoted in $(grep -o '`[^`]*`' <<<"$in" | tr -d '`'); do
-    if [[ ! -f "$folder/$quoted" ]]; then
-      report "the file \`$quoted\` is not there"
-      missing=$((missing + 1))
-    fi
-    files+=("$folder/$quoted")
-  done
-  while IFS= read -r name; do
-    [[ -n "$name" ]] || continue
-    [[ $mutate == yes ]] && name=$(mutated "$name")
-    checked=$((checked + 1))
-    if [[ "$name" =~ \.(h|cpp|json)$ ]]; then
-      [[ -f "$folder/$name" ]] && continue
-      report "\`$name\` is no file of the stage"
-    else
-      found_in "$name" "${files[@]}" && continue
-      report "\`$name\` is not in$(tr -s ' ' <<<"${in//\`/}")"
-    fi
-    missing=$((missing + 1))
-  done < <(grep -o '`[^`]*`' <<<"$ours" | tr -d '`')
-done <"$map"
 
-if [[ $mutate == yes ]]; then
-  if ((checked > 0 && missing == checked)); then
-    echo "every one of the $checked names, changed, is reported missing"
-    exit 0
-  fi
-  echo "FAILED: only $missing of the $checked changed names are reported missing"
-  exit 1
-fi
-((checked > 0)) || { echo "$map: no names in backquotes to check"; exit 1; }
-if ((missing > 0)); then
-  echo "FAILED: $missing of the $checked names of $map are not where it says"
-  exit 1
-fi
-echo "all $checked names of $map are where it says"
+def has_word(text, name):
+    """`name` in `text` with no letter, digit or _ either side of it (grep -wF)."""
+    start = text.find(name)
+    while start != -1:
+        end = start + len(name)
+        before_ok = start == 0 or not WORD.match(text[start - 1])
+        after_ok = end == len(text) or not WORD.match(text[end])
+        if before_ok and after_ok:
+            return True
+        start = text.find(name, start + 1)
+    return False
+
+
+def found_in(name, paths):
+    """`name` in one of the files: as written, or each of its parts."""
+    readable = [text for text in map(text_of, paths) if text is not None]
+    if any(has_word(text, name) for text in readable):
+        return True
+    parts = name.replace("::", " ").replace(".", " ").split()
+    return all(any(has_word(text, part) for text in readable) for part in parts)
+
+
+def mutated(name):
+    """A name as the map writes it, changed so that it can be nowhere: Zq after its last
+    part, or before a file name's extension."""
+    match = re.fullmatch(r"(.*)(\.(h|cpp|json))", name)
+    return f"{match[1]}Zq{match[2]}" if match else f"{name}Zq"
+
+
+def quoted(cell):
+    return re.findall(r"`([^`]*)`", cell)
+
+
+checked = missing = 0
+with open(map_path, encoding="utf-8") as map_file:
+    for line_number, line in enumerate(map_file.read().splitlines(), start=1):
+        if not line.startswith("| ") or line.startswith("| book |") or line.startswith("| --- "):
+            continue
+        cells = line.split("|", 4) + [""] * 4
+        ours, where = cells[2], cells[3]
+
+        def report(problem):  # one line a problem; the --mutated run counts them only
+            if not mutate:
+                print(f"{map_path}:{line_number}: {problem}")
+
+        paths = []
+        for file_name in quoted(where):
+            path = f"{folder}/{file_name}"
+            if not os.path.isfile(path):
+                report(f"the file `{file_name}` is not there")
+                missing += 1
+            paths.append(path)
+        for name in quoted(ours):
+            if not name:
+                continue
+            if mutate:
+                name = mutated(name)
+            checked += 1
+            if re.search(r"\.(h|cpp|json)$", name):
+                if os.path.isfile(f"{folder}/{name}"):
+                    continue
+                report(f"`{name}` is no file of the stage")
+            else:
+                if found_in(name, paths):
+                    continue
+                report(f"`{name}` is not in{re.sub(' +', ' ', where.replace('`', ''))}")
+            missing += 1
+
+if mutate:
+    if checked > 0 and missing == checked:
+        print(f"every one of the {checked} names, changed, is reported missing")
+        sys.exit(0)
+    print(f"FAILED: only {missing} of the {checked} changed names are reported missing")
+    sys.exit(1)
+if checked == 0:
+    print(f"{map_path}: no names in backquotes to check")
+    sys.exit(1)
+if missing > 0:
+    print(f"FAILED: {missing} of the {checked} names of {map_path} are not where it says")
+    sys.exit(1)
+print(f"all {checked} names of {map_path} are where it says")
+PYTHON
