@@ -49,12 +49,13 @@ std::vector<Sweep> knobs_for(int shapes) {
         return {{Knob::relaxation_iterations}, {Knob::correction_rate}, {Knob::dt},
                 {Knob::broad_phase},           {Knob::substeps},        {Knob::integrator},
                 {Knob::friction_model},        {Knob::rotation},        {Knob::friction},
-                {Knob::solver},                {Knob::velocity_iterations}};
+                {Knob::solver},                {Knob::velocity_iterations}, {Knob::sleep}};
     }
     if (shapes <= kMiddleRain) {
         return {{Knob::relaxation_iterations}, {Knob::correction_rate, Range::one}, {Knob::dt, Range::one},
                 {Knob::substeps, Range::one},  {Knob::integrator},                  {Knob::friction_model},
-                {Knob::rotation},              {Knob::friction},                    {Knob::solver}};
+                {Knob::rotation},              {Knob::friction},                    {Knob::solver},
+                {Knob::sleep}};
     }
     return {};
 }

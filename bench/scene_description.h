@@ -58,6 +58,8 @@ struct WorldDescription {
     std::optional<bool> warm_starting;          // 5.4
     std::optional<PositionMethod> position_method;  // 5.4
     std::optional<double> restitution_threshold;    // 5.4, px/s
+    std::optional<bool> sleep;                  // 5.5 on
+    std::optional<bool> continuous;             // 5.6
 
     friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include "markdown.h"
@@ -52,7 +53,7 @@ std::string pareto_line(const std::vector<Row>& rows, const ErrorAxis& error) {
 
 std::vector<Stage> stages_for(std::size_t bodies) {
     if (bodies < kBookStageMostBodies) return {kChapter5Stages.begin(), kChapter5Stages.end()};
-    return {Stage::s5_2, Stage::s5_3, Stage::s5_4};
+    return {std::next(kChapter5Stages.begin()), kChapter5Stages.end()};
 }
 
 SceneDescription bench_scene(const StudyContext& context, const std::string& name) {
