@@ -12,7 +12,7 @@
 //   - the trade: for 1, 4 and 16 sub-steps with continuous off, and for continuous on,
 //     the slowest speed at which a ball (radius 4 px) passes a 2 px wall head-on from
 //     any of 16 starting phases, and the cost of a step of the rain of 1000 (sequential
-//     impulse solver). Written to bench/results/ccd_trade.csv and ccd_trade.png.
+//     impulse solver). Written to bench/extra_results/ccd_trade.csv and ccd_trade.png.
 //
 //   build/ccd_study
 //
@@ -305,7 +305,7 @@ int main() {
         worlds.push_back(shootingWorld(engine::SolverKind::sequential_impulse, trade.continuous, trade.substeps));
     }
     const std::vector<double> costs = rainCosts(worlds, 120);
-    const std::filesystem::path results(BENCH_RESULTS_DIR);
+    const std::filesystem::path results(BENCH_EXTRA_RESULTS_DIR);
     std::ofstream csv(results / "ccd_trade.csv");
     csv << "setting,first_through_px_per_s,rain_1000_us_per_step\n";
     bench::Chart chart{.title = "a 4 px ball at a 2 px wall: sub-steps against continuous collision",

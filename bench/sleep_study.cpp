@@ -2,7 +2,7 @@
 // (bench/scenes/rain_1000.json) on both of 5.5's solvers, with sleep on and off, and on
 // Box2D 2.4 with its own sleeping, one run each. For every half second of simulated
 // time it writes the cost of a step and the share of the shapes asleep to
-// bench/results/sleep_rain_1000.csv, draws the cost against simulated time
+// bench/extra_results/sleep_rain_1000.csv, draws the cost against simulated time
 // (sleep_rain_1000.png), and prints the figures the README quotes: when the last shape
 // landed (the first step from which every moving shape touches something), the share
 // asleep 4 s later, and the cost of a settled step, sleep on against sleep off. The cost
@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
     }
     if (bench::box2d_available()) runs.push_back(runBox2d(bench::read_scene(scene_file), windows));
 
-    const std::filesystem::path results(BENCH_RESULTS_DIR);
+    const std::filesystem::path results(BENCH_EXTRA_RESULTS_DIR);
     std::ofstream csv(results / "sleep_rain_1000.csv");
     csv << "engine,simulated_s,us_per_step,asleep_share,speed_restarts,drift_restarts,largest_island\n";
     bench::Chart chart{.title = "rain of 1000: the cost of a step as the rain settles",
