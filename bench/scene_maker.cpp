@@ -33,10 +33,12 @@ WorldDescription world_of(double width, double height, std::optional<double> gra
     return world;
 }
 
+// clang-format off: fields as a reader reads a body (the layout would put one field a line)
 BodyDescription fixed_box(Vec2 center, double width, double height, double friction, double restitution) {
     return {.shape = ShapeKind::rectangle, .center = center, .width = width, .height = height, .mass = 0.0,
             .friction = friction, .restitution = restitution};
 }
+// clang-format on
 
 double uniform(browser::Random& random, double low, double high) { return low + (high - low) * random.next(); }
 
@@ -130,6 +132,7 @@ SceneDescription rain(int shapes) {
     return scene;
 }
 
+// clang-format off: fields as a reader reads a body (the layout would put one field a line)
 SceneDescription gas() {
     constexpr int kColumns = 10;
     constexpr int kRows = 6;
@@ -184,6 +187,7 @@ SceneDescription heavy_on_light(double heavy) {
                             .mass = heavy, .friction = 0.8, .restitution = 0.2});
     return scene;
 }
+// clang-format on
 
 SceneDescription slope() {
     constexpr double kRadius = 20.0;
@@ -202,6 +206,7 @@ SceneDescription slope() {
     return scene;
 }
 
+// clang-format off: fields as a reader reads a body (the layout would put one field a line)
 SceneDescription thin_wall() {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0, 0.0);
@@ -211,6 +216,7 @@ SceneDescription thin_wall() {
                             .friction = 0.0, .restitution = 0.5, .velocity = {1500.0, 0.0}});
     return scene;
 }
+// clang-format on
 
 SceneDescription scale(int shapes) {
     constexpr double kPitch = 20.0;
@@ -243,6 +249,7 @@ SceneDescription spread(int shapes) {
     return scene;
 }
 
+// clang-format off: fields as a reader reads a body (the layout would put one field a line)
 SceneDescription pair(PairKind kind) {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0);
@@ -262,7 +269,9 @@ SceneDescription pair(PairKind kind) {
     }
     return scene;
 }
+// clang-format on
 
+// clang-format off: a table of the scenes, aligned in columns (the layout would put one a line)
 std::vector<NamedScene> shipped() {
     return {{"pyramid_10", pyramid(10)}, {"pyramid_20", pyramid(20)}, {"rain_100", rain(100)},
             {"rain_400", rain(400)},     {"rain_1000", rain(1000)},   {"rain_1600", rain(1600)},
@@ -270,5 +279,6 @@ std::vector<NamedScene> shipped() {
             {"heavy_on_light", heavy_on_light()},
             {"slope", slope()},          {"thin_wall", thin_wall()}};
 }
+// clang-format on
 
 }  // namespace bench::scenes

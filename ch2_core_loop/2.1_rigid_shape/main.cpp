@@ -8,6 +8,7 @@
 
 namespace {
 
+// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
 const browser::StageDefaults kStage{
     .id = "s2_1",
     .title = "2.1 Rigid Shape: rectangles and circles in one object list",
@@ -21,6 +22,7 @@ const browser::StageDefaults kStage{
         {"f g", "a random rectangle / circle"},
     },
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

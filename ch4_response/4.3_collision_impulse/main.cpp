@@ -25,6 +25,7 @@ namespace {
 // 9 and sets it sliding, and 9 slides off the platform's end. 10 and 11 bounce off the
 // bottom and right borders, a little. At frame 180 H gives every shape a random kick.
 // Nothing turns: this project changes linear velocities only.
+// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
 const browser::StageDefaults kStage{
     .id = "s4_3",
     .title = "4.3 Collision Impulse: shapes land, bounce and rest",
@@ -55,6 +56,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the positional correction, and the impulses",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

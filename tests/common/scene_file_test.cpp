@@ -110,6 +110,7 @@ TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
     // The chapter 4 defaults, so that every world value below must come from the file.
     const auto scene = load_scene(file, WorldSettings{});
 
+    // clang-format off: the fields as the file above gives them (the layout would put one a line)
     CHECK(scene.world == WorldSettings{.width = 800, .height = 450, .gravity = {0, 20}, .dt = 0.016666666666666666,
                                        .relaxation_iterations = 15, .correction_rate = 0.8, .movement = true,
                                        .positional_correction = true, .remove_out_of_bounds = false});
@@ -121,6 +122,7 @@ TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
     CHECK(scene.bodies[1] == BodyDescription{.shape = ShapeKind::circle, .center = {100, 50}, .radius = 20,
                                              .mass = 5, .friction = 0.5, .restitution = 0.4, .velocity = {10, 0},
                                              .angular_velocity = 0});
+    // clang-format on
 }
 
 TEST_CASE("scene_file: a minimal scene takes every default") {

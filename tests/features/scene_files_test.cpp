@@ -98,6 +98,7 @@ const std::map<std::string, std::string> kEveryWorldKey{
 
 // The keys each stage reads, as docs/scene_format.md tables them: the book's settings
 // arrive with the project that introduces them, the knobs with their own stage.
+// clang-format off: a table, a stage a line (the layout would put one key a line)
 const std::map<std::string, std::vector<std::string>> kKeysOfStage{
     {"s4_1", {"width", "height", "gravity", "dt", "movement"}},
     {"s4_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
@@ -128,6 +129,7 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
               "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
               "sleep_speed", "time_to_sleep", "continuous"}},
 };
+// clang-format on
 
 std::string commaList(const std::vector<std::string>& words) {
     std::string list;
