@@ -44,7 +44,8 @@ std::string scene_text(int shapes, double seconds) {
 // value of every knob on the small one; on 400 shapes all the pass counts and one other
 // value of the rest, and no broad phases (testing every pair exactly takes minutes there;
 // the scale study compares the broad phases); on the biggest only the scene itself.
-// clang-format off: a table of knobs, aligned in columns (the layout would put one a line)
+// A table of knobs in aligned columns, which the layout would put one a line:
+// clang-format off
 std::vector<Sweep> knobs_for(int shapes) {
     if (shapes <= kSmallRain) {
         return {{Knob::relaxation_iterations}, {Knob::correction_rate}, {Knob::dt},

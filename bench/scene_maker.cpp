@@ -33,7 +33,8 @@ WorldDescription world_of(double width, double height, std::optional<double> gra
     return world;
 }
 
-// clang-format off: fields as a reader reads a body (the layout would put one field a line)
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 BodyDescription fixed_box(Vec2 center, double width, double height, double friction, double restitution) {
     return {.shape = ShapeKind::rectangle, .center = center, .width = width, .height = height, .mass = 0.0,
             .friction = friction, .restitution = restitution};
@@ -132,7 +133,8 @@ SceneDescription rain(int shapes) {
     return scene;
 }
 
-// clang-format off: fields as a reader reads a body (the layout would put one field a line)
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription gas() {
     constexpr int kColumns = 10;
     constexpr int kRows = 6;
@@ -206,7 +208,8 @@ SceneDescription slope() {
     return scene;
 }
 
-// clang-format off: fields as a reader reads a body (the layout would put one field a line)
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription thin_wall() {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0, 0.0);
@@ -249,7 +252,8 @@ SceneDescription spread(int shapes) {
     return scene;
 }
 
-// clang-format off: fields as a reader reads a body (the layout would put one field a line)
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription pair(PairKind kind) {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0);
@@ -271,7 +275,8 @@ SceneDescription pair(PairKind kind) {
 }
 // clang-format on
 
-// clang-format off: a table of the scenes, aligned in columns (the layout would put one a line)
+// A table of the scenes in aligned columns, which the layout would put one a line:
+// clang-format off
 std::vector<NamedScene> shipped() {
     return {{"pyramid_10", pyramid(10)}, {"pyramid_20", pyramid(20)}, {"rain_100", rain(100)},
             {"rain_400", rain(400)},     {"rain_1000", rain(1000)},   {"rain_1600", rain(1600)},

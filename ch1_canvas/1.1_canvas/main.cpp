@@ -7,7 +7,8 @@
 
 namespace {
 
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s1_1",
     .title = "1.1 HTML5 Canvas: the drawing core and the user control script",

@@ -8,7 +8,8 @@
 
 namespace {
 
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s2_1",
     .title = "2.1 Rigid Shape: rectangles and circles in one object list",

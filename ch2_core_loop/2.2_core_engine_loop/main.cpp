@@ -10,7 +10,8 @@ namespace {
 
 // Frame 0: walk the cursor left, drop five shapes along a line, turn three of them
 // and pin one in place. Frame 60: move the cursor up and drop two more.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s2_2",
     .title = "2.2 Core Engine Loop: fixed updates, moving and turning shapes",

@@ -22,7 +22,8 @@ namespace {
 // static. The thrown shapes fly parabolas under gravity (0, 10) and pass through each
 // other: this project moves shapes but does not yet respond to collisions. Object 5
 // stays selected, so the echo shows its velocity changing.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_1",
     .title = "4.1 Rigid Shape Movements: symplectic Euler under gravity",

@@ -23,7 +23,8 @@ namespace {
 // velocity F/G gave it (up to 150 px/s a component), into the borders and into each
 // other, and is pushed out again, step after step. Nothing answers their velocities
 // yet, so nothing bounces: a shape that reaches a border stays pressed against it.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_2",
     .title = "4.2 Positional Correction: relaxation pushes overlapping shapes apart",

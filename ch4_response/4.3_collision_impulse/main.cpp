@@ -25,7 +25,8 @@ namespace {
 // 9 and sets it sliding, and 9 slides off the platform's end. 10 and 11 bounce off the
 // bottom and right borders, a little. At frame 180 H gives every shape a random kick.
 // Nothing turns: this project changes linear velocities only.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_3",
     .title = "4.3 Collision Impulse: shapes land, bounce and rest",

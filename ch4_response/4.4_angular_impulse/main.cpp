@@ -25,7 +25,8 @@ namespace {
 // Circle 9 lands on the steep platform and slides down it, spinning up, then rolls on
 // along the bottom; box 10 tips over as it lands and tumbles down the slope in one
 // long hop.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_4",
     .title = "4.4 Angular Impulse: shapes turn, roll and tumble",

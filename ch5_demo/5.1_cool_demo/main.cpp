@@ -19,7 +19,8 @@ namespace {
 // The book's demo runs by itself: movement is on from the start. Two seconds in, a box
 // and a ball are thrown from the long slide (the selected object 0); at five seconds H
 // kicks every shape into the air once more.
-// clang-format off: a table, an option or a key a line (the layout would re-wrap its rows)
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s5_1",
     .title = "5.1 Cool Demo: the whole engine at play",

@@ -110,7 +110,8 @@ TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
     // The chapter 4 defaults, so that every world value below must come from the file.
     const auto scene = load_scene(file, WorldSettings{});
 
-    // clang-format off: the fields as the file above gives them (the layout would put one a line)
+    // The fields as the file above gives them, which the layout would put one a line:
+    // clang-format off
     CHECK(scene.world == WorldSettings{.width = 800, .height = 450, .gravity = {0, 20}, .dt = 0.016666666666666666,
                                        .relaxation_iterations = 15, .correction_rate = 0.8, .movement = true,
                                        .positional_correction = true, .remove_out_of_bounds = false});

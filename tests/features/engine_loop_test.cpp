@@ -15,7 +15,8 @@ constexpr double kExact = 1e-9;  // ms
 TEST_CASE("engine loop: updates per frame and carried lag for mixed frame lengths") {
     engine::FixedStepTimer timer(0.0);
     double now = 0.0;
-    // clang-format off: a table, a frame a line (the layout would pack its rows)
+    // A table, a frame a line, which the layout would pack:
+    // clang-format off
     struct Frame { double length_ms; int updates; double lag_ms; };
     const Frame frames[] = {
         // 1000/60 has no exact binary form: the step is a hair above 50/3 ms, and three

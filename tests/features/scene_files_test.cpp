@@ -98,7 +98,8 @@ const std::map<std::string, std::string> kEveryWorldKey{
 
 // The keys each stage reads, as docs/scene_format.md tables them: the book's settings
 // arrive with the project that introduces them, the knobs with their own stage.
-// clang-format off: a table, a stage a line (the layout would put one key a line)
+// A table, a stage a line, which the layout would spread to one key a line:
+// clang-format off
 const std::map<std::string, std::vector<std::string>> kKeysOfStage{
     {"s4_1", {"width", "height", "gravity", "dt", "movement"}},
     {"s4_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
