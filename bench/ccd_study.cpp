@@ -146,7 +146,9 @@ int plankThroughStage(const std::vector<PlankShot>& shots, bool bullet) {
 }
 
 #if BENCH_HAS_BOX2D
-b2Vec2 metres(Vec2 px) { return {static_cast<float>(px.x / kPixelsPerMetre), static_cast<float>(px.y / kPixelsPerMetre)}; }
+b2Vec2 metres(Vec2 px) {
+    return {static_cast<float>(px.x / kPixelsPerMetre), static_cast<float>(px.y / kPixelsPerMetre)};
+}
 
 b2Body* box2dBody(b2World& world, b2BodyType type, Vec2 center, double angle, const b2Shape& shape, bool bullet,
                   bool fixed_rotation) {
@@ -264,25 +266,27 @@ double firstThrough(int substeps, bool continuous) {
 
 int main() {
     const std::vector<Shot> shots = wallShots();
-    std::printf("1,000 shots at 20,000 px/s through a 2 px static wall (circles and rectangles, random angles and spins):\n");
+    std::printf(
+        "1,000 shots at 20,000 px/s through a 2 px static wall (circles and rectangles, random angles and spins):\n");
     for (engine::SolverKind solver : {engine::SolverKind::book, engine::SolverKind::sequential_impulse}) {
         const char* name = solver == engine::SolverKind::book ? "book's passes" : "sequential impulse";
-        std::printf("  5.6 %s: continuous on %d through, off %d through\n", name,
-                    wallThroughStage(shots, solver, true), wallThroughStage(shots, solver, false));
+        std::printf("  5.6 %s: continuous on %d through, off %d through\n", name, wallThroughStage(shots, solver, true),
+                    wallThroughStage(shots, solver, false));
     }
     const std::vector<PlankShot> planks = plankShots();
     std::printf("1,000 shots at 20,000 px/s at a 2 px plank of mass 1, sliding at up to 600 px/s (rotation off):\n");
     std::printf("  5.6 bullets: %d through; not bullets: %d through\n", plankThroughStage(planks, true),
                 plankThroughStage(planks, false));
 #if BENCH_HAS_BOX2D
-    std::printf("  Box2D 2.4 (bullets, shots capped at 3,600 px/s by b2_maxTranslation): wall %d through, plank %d through\n",
-                wallThroughBox2d(shots), plankThroughBox2d(planks));
+    std::printf(
+        "  Box2D 2.4 (bullets, shots capped at 3,600 px/s by b2_maxTranslation): wall %d through, plank %d through\n",
+        wallThroughBox2d(shots), plankThroughBox2d(planks));
 #endif
 
     std::printf("rain of 1000, cost of a step (10 s, the two runs taking turns):\n");
     for (engine::SolverKind solver : {engine::SolverKind::sequential_impulse, engine::SolverKind::book}) {
-        const std::vector<double> cost =
-            rainCosts({shootingWorld(solver, true), shootingWorld(solver, false)}, solver == engine::SolverKind::book ? 300 : 600);
+        const std::vector<double> cost = rainCosts({shootingWorld(solver, true), shootingWorld(solver, false)},
+                                                   solver == engine::SolverKind::book ? 300 : 600);
         std::printf("  %s: continuous on %.0f us, off %.0f us: %+.1f %%\n",
                     solver == engine::SolverKind::book ? "book's passes (5 s)" : "sequential impulse", cost[0], cost[1],
                     100.0 * (cost[0] / cost[1] - 1.0));
@@ -293,8 +297,8 @@ int main() {
         int substeps;
         bool continuous;
     };
-    const Trade trades[] = {{"1 sub-step", 1, false}, {"4 sub-steps", 4, false}, {"16 sub-steps", 16, false},
-                            {"continuous on", 1, true}};
+    const Trade trades[] = {
+        {"1 sub-step", 1, false}, {"4 sub-steps", 4, false}, {"16 sub-steps", 16, false}, {"continuous on", 1, true}};
     std::vector<engine::WorldSettings> worlds;
     for (const Trade& trade : trades) {
         worlds.push_back(shootingWorld(engine::SolverKind::sequential_impulse, trade.continuous, trade.substeps));
@@ -308,15 +312,18 @@ int main() {
                        .y_label = "slowest speed through (px/s)",
                        .log_x = true,
                        .log_y = true};
-    std::printf("the trade (sequential impulse solver):\n  setting | slowest speed through | rain of 1000, us a step\n");
+    std::printf(
+        "the trade (sequential impulse solver):\n  setting | slowest speed through | rain of 1000, us a step\n");
     for (std::size_t k = 0; k < std::size(trades); ++k) {
         const double through = firstThrough(trades[k].substeps, trades[k].continuous);
         csv << trades[k].name << ',' << through << ',' << costs[k] << '\n';
         std::printf("  %s | %s | %.0f\n", trades[k].name.c_str(),
-                    through > 0 ? (std::to_string(std::lround(through)) + " px/s").c_str() : "none up to 1e6 px/s", costs[k]);
+                    through > 0 ? (std::to_string(std::lround(through)) + " px/s").c_str() : "none up to 1e6 px/s",
+                    costs[k]);
         // None through up to 1e6 px/s is drawn at 1e6, labelled so.
-        chart.series.push_back({.name = trades[k].name,
-                                .points = {{costs[k], through > 0 ? through : 1e6, through > 0 ? "" : "none through"}}});
+        chart.series.push_back(
+            {.name = trades[k].name,
+             .points = {{costs[k], through > 0 ? through : 1e6, through > 0 ? "" : "none through"}}});
     }
     bench::write_chart(chart, results / "ccd_trade.png");
     return 0;

@@ -118,13 +118,13 @@ std::string results_markdown(const RunFacts& facts, const std::vector<StudyResul
             " per setting, each on a fresh world, errors from the first. Every row names the engine that made it: "
             "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs), "
             "5.4 (+ a contact solver) or Box2D; a setting runs on the oldest stage that can express it. "
-            "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each scene runs only as long "
+            "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each "
+            "scene runs only as long "
             "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "
             "10,000 steps, and the big scenes try fewer knobs. Costs are wall-clock times on a shared machine: "
             "compare rows of one run, not runs of different days. Definitions and targets: bench/README.md.\n\n";
-    text += facts.box2d ? "Box2D reference: " + box2d_version() + ", " +
-                              std::to_string(kBox2dVelocityIterations) + " velocity and " +
-                              std::to_string(kBox2dPositionIterations) +
+    text += facts.box2d ? "Box2D reference: " + box2d_version() + ", " + std::to_string(kBox2dVelocityIterations) +
+                              " velocity and " + std::to_string(kBox2dPositionIterations) +
                               " position iterations, continuous collision off, sleeping off.\n\n"
                         : std::string(kNoBox2d) + ".\n\n";
     std::string key;

@@ -88,8 +88,8 @@ void add_walls(SceneDescription& scene, bool closed, double friction, double res
 
 SceneDescription pyramid(int rows) {
     constexpr double kSide = 30.0;
-    constexpr double kPitch = kSide + 1.0;          // 1 px between neighbours
-    constexpr double kRowPitch = kSide + 0.25;      // 0.25 px above the support
+    constexpr double kPitch = kSide + 1.0;      // 1 px between neighbours
+    constexpr double kRowPitch = kSide + 0.25;  // 0.25 px above the support
     const double base_width = rows * kPitch;
     SceneDescription scene;
     scene.world = world_of(std::max(800.0, base_width + 300.0), std::max(450.0, rows * kRowPitch + 150.0));
@@ -101,8 +101,8 @@ SceneDescription pyramid(int rows) {
         const double y = floor_top - 0.25 - kSide / 2 - row * kRowPitch;
         for (int k = 0; k < boxes; ++k) {
             const double x = middle + (k - (boxes - 1) / 2.0) * kPitch;
-            scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {x, y}, .width = kSide,
-                                    .height = kSide, .restitution = 0.0});
+            scene.bodies.push_back(
+                {.shape = ShapeKind::rectangle, .center = {x, y}, .width = kSide, .height = kSide, .restitution = 0.0});
         }
     }
     return scene;
@@ -116,8 +116,8 @@ SceneDescription rain(int shapes) {
     const int columns = static_cast<int>(std::ceil(1.5 * std::sqrt(static_cast<double>(shapes))));
     const int rows = (shapes + columns - 1) / columns;
     SceneDescription scene;
-    scene.world = world_of(columns * kPitch + 2 * (kWall + kMargin), rows * kPitch + kDrop + kWall + 2 * kMargin + 40.0,
-                           100.0);
+    scene.world =
+        world_of(columns * kPitch + 2 * (kWall + kMargin), rows * kPitch + kDrop + kWall + 2 * kMargin + 40.0, 100.0);
     add_walls(scene, false, 0.8, 0.2);
 
     browser::Random random(kRainSeed);

@@ -203,8 +203,8 @@ int main(int argc, char** argv) {
     for (const Run& run : runs) {
         bench::Series series{.name = run.name, .joined = true};
         for (const Window& window : run.windows) {
-            csv << '"' << run.name << "\"," << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share << ','
-                << window.speed_restarts << ',' << window.drift_restarts << ',' << window.largest_island << '\n';
+            csv << '"' << run.name << "\"," << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share
+                << ',' << window.speed_restarts << ',' << window.drift_restarts << ',' << window.largest_island << '\n';
             series.points.push_back({window.end_s, window.us_per_step, ""});
         }
         chart.series.push_back(series);
@@ -220,9 +220,11 @@ int main(int argc, char** argv) {
         const Window& last = on.windows.back();
         std::printf("  last half second: %.0f restarts by speed, %.0f by drift; the largest island holds %.0f shapes\n",
                     last.speed_restarts, last.drift_restarts, last.largest_island);
-        std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n", settledCost(on, settled),
-                    settledCost(off, settled), 100.0 * settledCost(on, settled) / settledCost(off, settled));
+        std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n",
+                    settledCost(on, settled), settledCost(off, settled),
+                    100.0 * settledCost(on, settled) / settledCost(off, settled));
     }
-    if (runs.size() == 5) std::printf("%s: settled step (last 2 s): %.1f us\n", runs[4].name.c_str(), settledCost(runs[4], settled));
+    if (runs.size() == 5)
+        std::printf("%s: settled step (last 2 s): %.1f us\n", runs[4].name.c_str(), settledCost(runs[4], settled));
     return 0;
 }

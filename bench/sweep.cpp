@@ -60,12 +60,8 @@ std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
                 add("friction " + std::string(spelling(model)), [=](W& w) { w.friction_model = model; });
             }
             break;
-        case Knob::rotation:
-            add("rotation off", [](W& w) { w.rotation = false; });
-            break;
-        case Knob::friction:
-            add("friction off", [](W& w) { w.friction = false; });
-            break;
+        case Knob::rotation: add("rotation off", [](W& w) { w.rotation = false; }); break;
+        case Knob::friction: add("friction off", [](W& w) { w.friction = false; }); break;
         case Knob::solver:
             // Where nothing rests (no gravity) every collision should bounce, so the
             // restitution threshold is 0 there, as for Box2D's row (box2d_world.cpp).

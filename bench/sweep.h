@@ -46,8 +46,8 @@ struct Sweep {
 
 struct Setting {
     Stage stage = Stage::s5_1;
-    std::string varied;  // the knob's key in scene files, "" for the scene's own world
-    std::string label;   // for tables and charts: "passes 8", "dt 1/120", "grid", "scene"
+    std::string varied;      // the knob's key in scene files, "" for the scene's own world
+    std::string label;       // for tables and charts: "passes 8", "dt 1/120", "grid", "scene"
     WorldDescription world;  // as handed to the stage: keys it leaves unset are the stage's default
 };
 

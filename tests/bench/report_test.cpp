@@ -66,7 +66,7 @@ TEST_CASE("results_csv: the header, then one line per row with every column") {
     CHECK(first[column("relaxation_iterations")] == "8");
     CHECK(first[column("substeps")].empty());  // not a key of 5.1's
     CHECK(first[column("cost_us")] == "250");
-    CHECK(first[column("steps_per_s")] == "4000");  // 1e6 / 250
+    CHECK(first[column("steps_per_s")] == "4000");       // 1e6 / 250
     CHECK(first[column("ms_per_simulated_s")] == "15");  // 250 us x 60 steps
     CHECK(first[column("top_drift")] == "0.5");
     CHECK(first[column("energy_change")].empty());  // not measured here

@@ -29,9 +29,9 @@ TEST_CASE("stage_row: the setting's stage and world, the steps of a run, one run
     bench::WorldDescription world = scene.world;
     world.relaxation_iterations = 4;
     int calls = 0;
-    const bench::Row row = bench::stage_row({"pairs", "pair", scene},
-                                            {bench::Stage::s5_2, "relaxation_iterations", "passes 4", world}, 3,
-                                            run_steps(50, &calls));
+    const bench::Row row =
+        bench::stage_row({"pairs", "pair", scene}, {bench::Stage::s5_2, "relaxation_iterations", "passes 4", world}, 3,
+                         run_steps(50, &calls));
     CHECK(calls == 3);
     CHECK(row.repeats == 3);
     CHECK(row.steps == 50);
