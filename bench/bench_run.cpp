@@ -32,7 +32,8 @@ void write_text(const fs::path& file, const std::string& text) {
 std::vector<Study> chosen(const std::vector<std::string>& only) {
     std::vector<Study> studies = all_studies();
     if (!only.empty()) {
-        std::erase_if(studies, [&](const Study& s) { return std::find(only.begin(), only.end(), s.name) == only.end(); });
+        std::erase_if(studies,
+                      [&](const Study& s) { return std::find(only.begin(), only.end(), s.name) == only.end(); });
     }
     return studies;
 }
@@ -59,8 +60,8 @@ int run_bench(const BenchOptions& options, std::ostream& out, std::ostream& err)
             rows.insert(rows.end(), result.rows.begin(), result.rows.end());
             for (const Figure& figure : result.figures) write_chart(figure.chart, folder.staging() / figure.file);
             out << "[" << i + 1 << "/" << studies.size() << "] " << studies[i].name << ": " << result.rows.size()
-                << (result.rows.size() == 1 ? " setting" : " settings") << " in " << seconds_since(study_start)
-                << " s" << std::endl;
+                << (result.rows.size() == 1 ? " setting" : " settings") << " in " << seconds_since(study_start) << " s"
+                << std::endl;
         }
         write_text(folder.staging() / kResultsCsv, results_csv(rows));
         const RunFacts facts{.quick = options.quick,
@@ -69,8 +70,8 @@ int run_bench(const BenchOptions& options, std::ostream& out, std::ostream& err)
                              .box2d = box2d_available()};
         write_text(folder.staging() / "results.md", results_markdown(facts, results));
         folder.commit();
-        out << "wrote " << rows.size() << " rows to " << (target / kResultsCsv).string() << ", results.md and the charts ("
-            << seconds_since(start) << " s)\n";
+        out << "wrote " << rows.size() << " rows to " << (target / kResultsCsv).string()
+            << ", results.md and the charts (" << seconds_since(start) << " s)\n";
         return 0;
     } catch (const browser::FileError& error) {
         err << "bench: cannot write results to \"" << target.string() << "\": " << error.what() << '\n';

@@ -7,18 +7,18 @@
 //   - 1,000 bullets at a 2 px plank of mass 1 that slides along its length (rotation
 //     off in both engines): through when the ball is ever past the plank between its ends.
 //   - the rain of 1000 (bench/scenes/rain_1000.json) with continuous on and off, on
-//     both solvers: the cost of a step, the two runs taking turns window by window.
+//     both solvers: the cost of a step in processor time (bench/thread_clock.h), the two
+//     runs taking turns window by window.
 //   - the trade: for 1, 4 and 16 sub-steps with continuous off, and for continuous on,
 //     the slowest speed at which a ball (radius 4 px) passes a 2 px wall head-on from
 //     any of 16 starting phases, and the cost of a step of the rain of 1000 (sequential
-//     impulse solver). Written to bench/results/ccd_trade.csv and ccd_trade.png.
+//     impulse solver). Written to bench/extra_results/ccd_trade.csv and ccd_trade.png.
 //
 //   build/ccd_study
 //
 // Box2D 2.4 moves no body more than b2_maxTranslation (2 m, 60 px at the bench's 30 px
 // to the metre) in a step: its shots fly at 3,600 px/s, not 20,000. Linked with stage
 // 5.6's engine alone (namespace engine), as sleep_study is with 5.5's.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +40,7 @@
 #include "random.h"
 #include "rectangle.h"
 #include "scene_io.h"
+#include "thread_clock.h"
 
 namespace {
 
@@ -146,7 +147,9 @@ int plankThroughStage(const std::vector<PlankShot>& shots, bool bullet) {
 }
 
 #if BENCH_HAS_BOX2D
-b2Vec2 metres(Vec2 px) { return {static_cast<float>(px.x / kPixelsPerMetre), static_cast<float>(px.y / kPixelsPerMetre)}; }
+b2Vec2 metres(Vec2 px) {
+    return {static_cast<float>(px.x / kPixelsPerMetre), static_cast<float>(px.y / kPixelsPerMetre)};
+}
 
 b2Body* box2dBody(b2World& world, b2BodyType type, Vec2 center, double angle, const b2Shape& shape, bool bullet,
                   bool fixed_rotation) {
@@ -233,9 +236,9 @@ std::vector<double> rainCosts(const std::vector<engine::WorldSettings>& worlds, 
     std::vector<double> seconds(worlds.size(), 0.0);
     for (int done = 0; done < steps; done += 30) {
         for (std::size_t k = 0; k < pages.size(); ++k) {
-            const auto start = std::chrono::steady_clock::now();
+            const double start = bench::thread_cpu_seconds();
             for (int step = 0; step < 30; ++step) pages[k]->core.update();
-            seconds[k] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            seconds[k] += bench::thread_cpu_seconds() - start;
         }
     }
     for (double& s : seconds) s = s * 1e6 / steps;
@@ -264,25 +267,27 @@ double firstThrough(int substeps, bool continuous) {
 
 int main() {
     const std::vector<Shot> shots = wallShots();
-    std::printf("1,000 shots at 20,000 px/s through a 2 px static wall (circles and rectangles, random angles and spins):\n");
+    std::printf(
+        "1,000 shots at 20,000 px/s through a 2 px static wall (circles and rectangles, random angles and spins):\n");
     for (engine::SolverKind solver : {engine::SolverKind::book, engine::SolverKind::sequential_impulse}) {
         const char* name = solver == engine::SolverKind::book ? "book's passes" : "sequential impulse";
-        std::printf("  5.6 %s: continuous on %d through, off %d through\n", name,
-                    wallThroughStage(shots, solver, true), wallThroughStage(shots, solver, false));
+        std::printf("  5.6 %s: continuous on %d through, off %d through\n", name, wallThroughStage(shots, solver, true),
+                    wallThroughStage(shots, solver, false));
     }
     const std::vector<PlankShot> planks = plankShots();
     std::printf("1,000 shots at 20,000 px/s at a 2 px plank of mass 1, sliding at up to 600 px/s (rotation off):\n");
     std::printf("  5.6 bullets: %d through; not bullets: %d through\n", plankThroughStage(planks, true),
                 plankThroughStage(planks, false));
 #if BENCH_HAS_BOX2D
-    std::printf("  Box2D 2.4 (bullets, shots capped at 3,600 px/s by b2_maxTranslation): wall %d through, plank %d through\n",
-                wallThroughBox2d(shots), plankThroughBox2d(planks));
+    std::printf(
+        "  Box2D 2.4 (bullets, shots capped at 3,600 px/s by b2_maxTranslation): wall %d through, plank %d through\n",
+        wallThroughBox2d(shots), plankThroughBox2d(planks));
 #endif
 
     std::printf("rain of 1000, cost of a step (10 s, the two runs taking turns):\n");
     for (engine::SolverKind solver : {engine::SolverKind::sequential_impulse, engine::SolverKind::book}) {
-        const std::vector<double> cost =
-            rainCosts({shootingWorld(solver, true), shootingWorld(solver, false)}, solver == engine::SolverKind::book ? 300 : 600);
+        const std::vector<double> cost = rainCosts({shootingWorld(solver, true), shootingWorld(solver, false)},
+                                                   solver == engine::SolverKind::book ? 300 : 600);
         std::printf("  %s: continuous on %.0f us, off %.0f us: %+.1f %%\n",
                     solver == engine::SolverKind::book ? "book's passes (5 s)" : "sequential impulse", cost[0], cost[1],
                     100.0 * (cost[0] / cost[1] - 1.0));
@@ -293,14 +298,14 @@ int main() {
         int substeps;
         bool continuous;
     };
-    const Trade trades[] = {{"1 sub-step", 1, false}, {"4 sub-steps", 4, false}, {"16 sub-steps", 16, false},
-                            {"continuous on", 1, true}};
+    const Trade trades[] = {
+        {"1 sub-step", 1, false}, {"4 sub-steps", 4, false}, {"16 sub-steps", 16, false}, {"continuous on", 1, true}};
     std::vector<engine::WorldSettings> worlds;
     for (const Trade& trade : trades) {
         worlds.push_back(shootingWorld(engine::SolverKind::sequential_impulse, trade.continuous, trade.substeps));
     }
     const std::vector<double> costs = rainCosts(worlds, 120);
-    const std::filesystem::path results(BENCH_RESULTS_DIR);
+    const std::filesystem::path results(BENCH_EXTRA_RESULTS_DIR);
     std::ofstream csv(results / "ccd_trade.csv");
     csv << "setting,first_through_px_per_s,rain_1000_us_per_step\n";
     bench::Chart chart{.title = "a 4 px ball at a 2 px wall: sub-steps against continuous collision",
@@ -308,15 +313,18 @@ int main() {
                        .y_label = "slowest speed through (px/s)",
                        .log_x = true,
                        .log_y = true};
-    std::printf("the trade (sequential impulse solver):\n  setting | slowest speed through | rain of 1000, us a step\n");
+    std::printf(
+        "the trade (sequential impulse solver):\n  setting | slowest speed through | rain of 1000, us a step\n");
     for (std::size_t k = 0; k < std::size(trades); ++k) {
         const double through = firstThrough(trades[k].substeps, trades[k].continuous);
         csv << trades[k].name << ',' << through << ',' << costs[k] << '\n';
         std::printf("  %s | %s | %.0f\n", trades[k].name.c_str(),
-                    through > 0 ? (std::to_string(std::lround(through)) + " px/s").c_str() : "none up to 1e6 px/s", costs[k]);
+                    through > 0 ? (std::to_string(std::lround(through)) + " px/s").c_str() : "none up to 1e6 px/s",
+                    costs[k]);
         // None through up to 1e6 px/s is drawn at 1e6, labelled so.
-        chart.series.push_back({.name = trades[k].name,
-                                .points = {{costs[k], through > 0 ? through : 1e6, through > 0 ? "" : "none through"}}});
+        chart.series.push_back(
+            {.name = trades[k].name,
+             .points = {{costs[k], through > 0 ? through : 1e6, through > 0 ? "" : "none through"}}});
     }
     bench::write_chart(chart, results / "ccd_trade.png");
     return 0;

@@ -82,7 +82,8 @@ AxisMarks log_marks(const Axis& axis) {
     const auto inside = [&](double u) { return u >= axis.low && u <= axis.high; };
     for (int decade = first; decade <= last; ++decade) {
         if (decade % stride == 0) {
-            marks.ticks.push_back({static_cast<double>(decade), log_label(1, decade), 0, static_cast<double>(decade / stride)});
+            marks.ticks.push_back(
+                {static_cast<double>(decade), log_label(1, decade), 0, static_cast<double>(decade / stride)});
         }
     }
     const auto add_multiples = [&](std::initializer_list<int> multiples, int priority) {
@@ -134,8 +135,8 @@ AxisMarks axis_marks(const Axis& axis, double spacing) {
     return {linear_ticks(axis.low, axis.high, axis.length(), spacing, [](double value) { return value; }), {}};
 }
 
-std::vector<bool> labels_that_fit(const std::vector<Tick>& ticks, const Axis& axis,
-                                  const std::vector<int>& extent, double gap) {
+std::vector<bool> labels_that_fit(const std::vector<Tick>& ticks, const Axis& axis, const std::vector<int>& extent,
+                                  double gap) {
     const auto clear_of_shown = [&](const std::vector<bool>& shown, std::size_t i) {
         for (std::size_t j = 0; j < ticks.size(); ++j) {
             if (j == i || !shown[j]) continue;

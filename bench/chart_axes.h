@@ -42,8 +42,8 @@ struct Tick {
 };
 
 struct AxisMarks {
-    std::vector<Tick> ticks;           // with a grid line and a label (if it fits)
-    std::vector<double> minor_units;   // a faint grid line only
+    std::vector<Tick> ticks;          // with a grid line and a label (if it fits)
+    std::vector<double> minor_units;  // a faint grid line only
 };
 
 // Ticks with round values and the faint lines between them. `spacing`: the pixels wanted

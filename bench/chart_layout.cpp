@@ -29,8 +29,8 @@ Layout lay_out(const Chart& chart, const std::vector<std::string>& notes, const 
 
     // Top to bottom: header, plot, x tick labels, x axis label.
     layout.plot_top = kMargin + header_lines * kLineStep + 12;  // the top y label reaches 7 px above
-    layout.plot_bottom = kChartHeight - kMargin - (chart.x_label.empty() ? 0 : kLineStep + 4) - kInkHeight -
-                         kLabelGap - kTickLength;
+    layout.plot_bottom =
+        kChartHeight - kMargin - (chart.x_label.empty() ? 0 : kLineStep + 4) - kInkHeight - kLabelGap - kTickLength;
 
     std::vector<double> xs, ys;
     for (const ChartPoint& p : placed) {
@@ -41,14 +41,16 @@ Layout lay_out(const Chart& chart, const std::vector<std::string>& notes, const 
     layout.y = {chart.log_y, y_low, y_high, centred(layout.plot_bottom), centred(layout.plot_top)};
     layout.y_marks = axis_marks(layout.y, 55.0);
     layout.y_label_inks = label_inks(layout.y_marks.ticks);
-    layout.y_shown = labels_that_fit(layout.y_marks.ticks, layout.y, std::vector<int>(layout.y_marks.ticks.size(), kCapHeight), 6.0);
+    layout.y_shown =
+        labels_that_fit(layout.y_marks.ticks, layout.y, std::vector<int>(layout.y_marks.ticks.size(), kCapHeight), 6.0);
     int widest_y_label = 0;
     for (std::size_t i = 0; i < layout.y_label_inks.size(); ++i) {
         if (layout.y_shown[i]) widest_y_label = std::max(widest_y_label, layout.y_label_inks[i].width);
     }
 
     // Left to right: y axis label (turned), y tick labels, plot, legend.
-    layout.plot_left = kMargin + (chart.y_label.empty() ? 0 : kInkHeight + 12) + widest_y_label + kLabelGap + kTickLength;
+    layout.plot_left =
+        kMargin + (chart.y_label.empty() ? 0 : kInkHeight + 12) + widest_y_label + kLabelGap + kTickLength;
     layout.legend = list_legend(chart, has_front);
     const bool has_legend = !layout.legend.entries.empty();
     layout.plot_right = kChartWidth - kMargin - (has_legend ? layout.legend.width + kLegendGap : 16);

@@ -11,7 +11,8 @@ Legend list_legend(const Chart& chart, bool has_front) {
     for (std::size_t s = 0; s < chart.series.size(); ++s) {
         const Series& series = chart.series[s];
         if (series.name.empty()) continue;
-        legend.entries.push_back({wrapped(series.name, kLegendMostText), colour_of(s), marker_of(s), series.joined, false});
+        legend.entries.push_back(
+            {wrapped(series.name, kLegendMostText), colour_of(s), marker_of(s), series.joined, false});
     }
     if (has_front) legend.entries.push_back({{"Pareto front"}, kParetoColor, Marker::circle, true, true});
     if (legend.entries.empty()) return legend;

@@ -20,7 +20,7 @@ constexpr Color kParetoColor{20, 20, 20, 255};
 
 // Ten colours that stay apart from one another and from the grey of the grid.
 constexpr Color kPalette[] = {
-    {31, 119, 180, 255}, {255, 127, 14, 255}, {44, 160, 44, 255},  {214, 39, 40, 255},  {148, 103, 189, 255},
+    {31, 119, 180, 255}, {255, 127, 14, 255},  {44, 160, 44, 255},   {214, 39, 40, 255},  {148, 103, 189, 255},
     {140, 86, 75, 255},  {227, 119, 194, 255}, {127, 127, 127, 255}, {188, 189, 34, 255}, {23, 190, 207, 255},
 };
 constexpr int kColourCount = static_cast<int>(std::size(kPalette));
@@ -30,7 +30,7 @@ constexpr double kParetoRadius = 9.0;  // the ring round a point on the Pareto f
 
 constexpr int kMargin = 14;  // between the picture's edge and anything on it
 constexpr int kTickLength = 5;
-constexpr int kLabelGap = 6;  // between a tick and its label
+constexpr int kLabelGap = 6;    // between a tick and its label
 constexpr int kLegendGap = 18;  // between the plot and the legend
 constexpr int kLegendPadding = 8;
 constexpr int kLegendSample = 34;     // room for a marker with a bit of line either side

@@ -31,9 +31,19 @@ void marker_path(Canvas& canvas, Marker marker, double cx, double cy, double r) 
         case Marker::triangle_up: polygon({{0, -t}, {0.866 * t, 0.5 * t}, {-0.866 * t, 0.5 * t}}); break;
         case Marker::diamond: polygon({{0, -d}, {d, 0}, {0, d}, {-d, 0}}); break;
         case Marker::triangle_down: polygon({{0, t}, {-0.866 * t, -0.5 * t}, {0.866 * t, -0.5 * t}}); break;
-        case Marker::cross: bar(s, s); bar(s, -s); break;
-        case Marker::plus: bar(r, 0); bar(0, r); break;
-        case Marker::star: bar(r, 0); bar(0.5 * r, 0.866 * r); bar(0.5 * r, -0.866 * r); break;
+        case Marker::cross:
+            bar(s, s);
+            bar(s, -s);
+            break;
+        case Marker::plus:
+            bar(r, 0);
+            bar(0, r);
+            break;
+        case Marker::star:
+            bar(r, 0);
+            bar(0.5 * r, 0.866 * r);
+            bar(0.5 * r, -0.866 * r);
+            break;
     }
 }
 

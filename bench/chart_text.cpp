@@ -51,8 +51,9 @@ void stamp(Image& picture, const Image& ink, int x, int y, Color color) {
             const double cover = 1.0 - ink.at(i, j).r / 255.0;
             if (cover <= 0.0 || !picture.contains(x + i, y + j)) continue;
             const Color under = picture.at(x + i, y + j);
-            picture.set(x + i, y + j, {mix(under.r, color.r, cover), mix(under.g, color.g, cover),
-                                       mix(under.b, color.b, cover), 255});
+            picture.set(
+                x + i, y + j,
+                {mix(under.r, color.r, cover), mix(under.g, color.g, cover), mix(under.b, color.b, cover), 255});
         }
     }
 }

@@ -111,7 +111,8 @@ void draw_texts(Image& picture, const Chart& chart, const Layout& layout) {
     const int plot_middle_y = whole(0.5 * (layout.plot_top + layout.plot_bottom));
     if (!chart.x_label.empty()) {
         const Image ink = ink_of(chart.x_label);
-        const int x = std::clamp(plot_middle_x - ink.width / 2, kMargin, std::max(kMargin, kChartWidth - kMargin - ink.width));
+        const int x =
+            std::clamp(plot_middle_x - ink.width / 2, kMargin, std::max(kMargin, kChartWidth - kMargin - ink.width));
         stamp(picture, ink, x, below_ticks + kLineStep + 4, kTextInk);
     }
     if (!chart.y_label.empty()) {
@@ -154,7 +155,8 @@ void write_chart(const Chart& chart, const std::filesystem::path& png) {
         }
     }
     std::vector<std::string> notes = chart.notes;
-    if (off_scale > 0) notes.push_back(std::to_string(off_scale) + (off_scale == 1 ? " point" : " points") + " off the scale");
+    if (off_scale > 0)
+        notes.push_back(std::to_string(off_scale) + (off_scale == 1 ? " point" : " points") + " off the scale");
     const std::vector<ChartPoint> front = chart.mark_pareto ? pareto_front(placed) : std::vector<ChartPoint>{};
     const Layout layout = lay_out(chart, notes, placed, !front.empty());
 

@@ -11,7 +11,7 @@
 
 namespace bench {
 
-inline constexpr int kChartWidth = 900;   // pixels of every chart write_chart makes
+inline constexpr int kChartWidth = 900;  // pixels of every chart write_chart makes
 inline constexpr int kChartHeight = 560;
 
 struct ChartPoint {
@@ -32,9 +32,9 @@ struct Chart {
     std::string y_label;
     bool log_x = false;
     bool log_y = false;
-    std::vector<Series> series;  // each gets its own colour and marker
-    bool mark_pareto = false;    // outline the points no other point beats on both axes
-                                 // (lower is better on both) and join them
+    std::vector<Series> series;      // each gets its own colour and marker
+    bool mark_pareto = false;        // outline the points no other point beats on both axes
+                                     // (lower is better on both) and join them
     std::vector<std::string> notes;  // extra lines printed under the title
 };
 

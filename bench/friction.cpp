@@ -46,8 +46,8 @@ Measure roll_distance() {
         world.run(steps);
         const double t = static_cast<double>(steps) * settings.dt;
         const Vec2 down_slope{std::cos(scenes::kSlopeAngle), std::sin(scenes::kSlopeAngle)};
-        const double run = (oracle::center(world.snapshot()[ball].shape) - oracle::center(start[ball].shape))
-                               .dot(down_slope);
+        const double run =
+            (oracle::center(world.snapshot()[ball].shape) - oracle::center(start[ball].shape)).dot(down_slope);
         const double exact = 2.0 / 3.0 * settings.gravity.y * std::sin(scenes::kSlopeAngle) * t * t / 2;
         Metrics metrics;
         metrics.roll_error = run / exact - 1;
@@ -61,15 +61,20 @@ StudyResult slide_study(const StudyContext& context) {
     SweepPlan plan;
     plan.study = "slide";
     plan.heading = "Friction: a sliding box";
-    plan.question = "A 40 × 20 box slides at " + figure(scenes::kSlideSpeed) + " px/s on a static floor, friction " +
-                    figure(scenes::kSlideFriction) + " on both, gravity " + figure(scenes::kSlideGravity) +
-                    " px/s². Coulomb's law stops it after v²/(2 μ g) = " +
-                    figure(scenes::kSlideSpeed * scenes::kSlideSpeed /
-                           (2 * scenes::kSlideFriction * scenes::kSlideGravity)) +
-                    " px; *slide error* is how much further (+) or shorter (-) it went in " + figure(kSlideSeconds) +
-                    " s. The book's friction model is not Coulomb's (docs/errata.md, \"Friction\").";
-    plan.knobs = {{Knob::friction_model}, {Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps},
-                  {Knob::integrator}, {Knob::rotation}, {Knob::solver}};
+    plan.question =
+        "A 40 × 20 box slides at " + figure(scenes::kSlideSpeed) + " px/s on a static floor, friction " +
+        figure(scenes::kSlideFriction) + " on both, gravity " + figure(scenes::kSlideGravity) +
+        " px/s². Coulomb's law stops it after v²/(2 μ g) = " +
+        figure(scenes::kSlideSpeed * scenes::kSlideSpeed / (2 * scenes::kSlideFriction * scenes::kSlideGravity)) +
+        " px; *slide error* is how much further (+) or shorter (-) it went in " + figure(kSlideSeconds) +
+        " s. The book's friction model is not Coulomb's (docs/errata.md, \"Friction\").";
+    plan.knobs = {{Knob::friction_model},
+                  {Knob::relaxation_iterations},
+                  {Knob::dt},
+                  {Knob::substeps},
+                  {Knob::integrator},
+                  {Knob::rotation},
+                  {Knob::solver}};
     plan.measure = slide_distance();
     plan.error = {"size of the slide error (share of Coulomb's distance)",
                   [](const Metrics& m) { return m.slide_error; }, 1e-4};
@@ -94,10 +99,16 @@ StudyResult slope_study(const StudyContext& context) {
     plan.question = "A disc (radius 20, friction 0.8) starts at rest on a static slope of " +
                     figure(scenes::kSlopeAngle) + " rad, gravity " + figure(scenes::kSlopeGravity) +
                     " px/s². Rolling without slipping it runs (1/3) g sin(angle) t² down the slope in t; "
-                    "*roll error* is how much further (+) or shorter (-) it ran in " + figure(kRollSeconds) +
+                    "*roll error* is how much further (+) or shorter (-) it ran in " +
+                    figure(kRollSeconds) +
                     " s. Without rotation it cannot roll, and friction holds it or lets it slide.";
-    plan.knobs = {{Knob::friction_model}, {Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps},
-                  {Knob::integrator}, {Knob::rotation}, {Knob::solver}};
+    plan.knobs = {{Knob::friction_model},
+                  {Knob::relaxation_iterations},
+                  {Knob::dt},
+                  {Knob::substeps},
+                  {Knob::integrator},
+                  {Knob::rotation},
+                  {Knob::solver}};
     plan.measure = roll_distance();
     plan.error = {"size of the roll error (share of the exact run)", [](const Metrics& m) { return m.roll_error; },
                   1e-4};

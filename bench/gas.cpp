@@ -31,13 +31,18 @@ StudyResult gas_study(const StudyContext& context) {
     SweepPlan plan;
     plan.study = "gas";
     plan.heading = "Energy: an elastic gas";
-    plan.question = "60 discs at 150 px/s in a closed box, restitution 1, friction 0, no gravity. *Energy change* "
-                    "is (E_end - E_start) / E_start of the kinetic energy (1/2 m v^2 + 1/2 I w^2) after " +
-                    std::to_string(steps) + " fixed steps, whatever the dt; it should be 0.";
+    plan.question =
+        "60 discs at 150 px/s in a closed box, restitution 1, friction 0, no gravity. *Energy change* "
+        "is (E_end - E_start) / E_start of the kinetic energy (1/2 m v^2 + 1/2 I w^2) after " +
+        std::to_string(steps) + " fixed steps, whatever the dt; it should be 0.";
     // No broad phases: they change only the cost, and 10,000 steps of testing every pair
     // would take most of the bench's time (the scale study compares them). No correction
     // rates either: discs that bounce apart at once leave it nothing to correct.
-    plan.knobs = {{Knob::relaxation_iterations}, {Knob::dt}, {Knob::substeps}, {Knob::integrator}, {Knob::rotation},
+    plan.knobs = {{Knob::relaxation_iterations},
+                  {Knob::dt},
+                  {Knob::substeps},
+                  {Knob::integrator},
+                  {Knob::rotation},
                   {Knob::solver}};
     plan.measure = energy_drift(steps);
     plan.box2d = true;
@@ -46,8 +51,8 @@ StudyResult gas_study(const StudyContext& context) {
     plan.columns = {{"energy change", [](const Row& r) { return percent(r.metrics.energy_change); }}};
     StudyResult result = run_sweep(context, plan);
     const Row& book = result.rows.front();
-    std::string key = "Elastic gas, kinetic energy change after " + std::to_string(steps) + " steps: " +
-                      percent(book.metrics.energy_change) + " (stage " + stage_name(book.stage) +
+    std::string key = "Elastic gas, kinetic energy change after " + std::to_string(steps) +
+                      " steps: " + percent(book.metrics.energy_change) + " (stage " + stage_name(book.stage) +
                       ", the scene's world)";
     if (result.rows.back().stage == Stage::box2d) {
         key += ", " + percent(result.rows.back().metrics.energy_change) + " (Box2D)";

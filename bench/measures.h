@@ -12,8 +12,8 @@ namespace bench {
 // pixel of overlap is error. Pairs of two static bodies are left out: nothing moves
 // them, and a box's walls may overlap at its corners by design.
 struct Penetration {
-    double max = 0.0;   // px, the deepest pair (0 when none overlap)
-    double mean = 0.0;  // px, over the overlapping pairs (0 when none overlap)
+    double max = 0.0;       // px, the deepest pair (0 when none overlap)
+    double mean = 0.0;      // px, over the overlapping pairs (0 when none overlap)
     std::size_t pairs = 0;  // how many pairs overlap
 };
 Penetration penetration(const Snapshot& bodies);

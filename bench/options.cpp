@@ -54,11 +54,12 @@ ParsedBenchCommandLine parse_bench_command_line(int argc, const char* const* arg
     CLI::App app("bench: what each chapter 5 stage's engine and knobs cost and buy", "bench");
     app.allow_extras();  // unknown words stay in app.remaining(), so we can name them
     app.add_option("--out", out_text, "folder for results.csv, results.md and the charts (replaced by each run)")
-        ->type_name("DIR")->capture_default_str();
+        ->type_name("DIR")
+        ->capture_default_str();
     app.add_flag("--quick", quick, "a run of seconds: fewer settings, shorter runs, one timed run each");
     app.add_option("--repeats", repeats_text, "timed runs per setting; the cost is their median")
-        ->type_name("N")->default_str(std::to_string(kDefaultRepeats) + " (" + std::to_string(kQuickRepeats) +
-                                      " with --quick)");
+        ->type_name("N")
+        ->default_str(std::to_string(kDefaultRepeats) + " (" + std::to_string(kQuickRepeats) + " with --quick)");
     app.add_option("--only", only, "run only these studies: " + joined(studies))->type_name("NAME");
     app.add_option("--write-scenes", scenes_text,
                    "write the shipped scene files (bench/scenes/) into DIR, and do nothing else")
@@ -84,8 +85,8 @@ ParsedBenchCommandLine parse_bench_command_line(int argc, const char* const* arg
         if (out_text.empty()) throw UsageError("--out: must name a folder (got \"\")");
         options.out_dir = out_text;
         options.quick = quick;
-        options.repeats = app.count("--repeats") > 0 ? repeats_option(repeats_text)
-                                                     : (quick ? kQuickRepeats : kDefaultRepeats);
+        options.repeats =
+            app.count("--repeats") > 0 ? repeats_option(repeats_text) : (quick ? kQuickRepeats : kDefaultRepeats);
         check_studies(only, studies);
         options.only = only;
         return {std::move(options), 0};

@@ -19,8 +19,8 @@ inline constexpr int kMaxRepeats = 100;
 struct BenchOptions {
     std::filesystem::path out_dir;
     bool quick = false;
-    int repeats = kDefaultRepeats;  // kQuickRepeats with --quick, unless --repeats says
-    std::vector<std::string> only;  // study names; empty: every study
+    int repeats = kDefaultRepeats;       // kQuickRepeats with --quick, unless --repeats says
+    std::vector<std::string> only;       // study names; empty: every study
     std::filesystem::path write_scenes;  // not empty: write the scene files there, and nothing else
 };
 

@@ -20,7 +20,7 @@ constexpr Stage kCountingStage = Stage::s5_2;
 constexpr int kFewPasses = 1;
 constexpr int kManyPasses = 30;
 constexpr long kSettleSteps = 60;  // a second for the pair to come to rest
-constexpr long kSteps = 100'000;  // a few microseconds each: long runs, for a steady time
+constexpr long kSteps = 100'000;   // a few microseconds each: long runs, for a steady time
 constexpr long kQuickSteps = 200;
 
 // The overlap left at the end shows that the pair was still in contact, so every pass
@@ -74,14 +74,17 @@ StudyResult pair_cost_study(const StudyContext& context) {
         result.rows.insert(result.rows.end(), rows.begin(), rows.end());
     }
     result.key_figures.push_back(key + ".");
-    result.markdown = "## The price of a pair\n\n"
-                      "One pair of one kind in resting contact (a box on a static box, a disc on a static box, a "
-                      "disc balanced on a static disc), timed on stage " + stage_name(kCountingStage) +
-                      " with the book's bounding circles (5.1 does not count pairs) over " + std::to_string(steps) +
-                      " steps with 1 relaxation pass and with 30. The difference, divided by the 29 extra passes "
-                      "and by the pairs each pass tests exactly, is the cost of one pair in one pass: the "
-                      "bounding-circle test, the exact test and the resolution. Multiply by the pairs per step "
-                      "of a scene to see what its narrow phase costs.\n\n" + summary.text();
+    result.markdown =
+        "## The price of a pair\n\n"
+        "One pair of one kind in resting contact (a box on a static box, a disc on a static box, a "
+        "disc balanced on a static disc), timed on stage " +
+        stage_name(kCountingStage) + " with the book's bounding circles (5.1 does not count pairs) over " +
+        std::to_string(steps) +
+        " steps with 1 relaxation pass and with 30. The difference, divided by the 29 extra passes "
+        "and by the pairs each pass tests exactly, is the cost of one pair in one pass: the "
+        "bounding-circle test, the exact test and the resolution. Multiply by the pairs per step "
+        "of a scene to see what its narrow phase costs.\n\n" +
+        summary.text();
     return result;
 }
 

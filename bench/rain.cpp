@@ -36,7 +36,8 @@ std::vector<Column> overlap_columns() {
 
 std::string scene_text(int shapes, double seconds) {
     return std::to_string(shapes) + " boxes and discs (10 to 18 px) fall into a box and pile up; after " +
-           figure(seconds) + " s of simulated time the deepest and the mean overlap of two shapes are measured "
+           figure(seconds) +
+           " s of simulated time the deepest and the mean overlap of two shapes are measured "
            "by the collision oracle. A settled pile should not overlap at all.";
 }
 
@@ -46,15 +47,30 @@ std::string scene_text(int shapes, double seconds) {
 // the scale study compares the broad phases); on the biggest only the scene itself.
 std::vector<Sweep> knobs_for(int shapes) {
     if (shapes <= kSmallRain) {
-        return {{Knob::relaxation_iterations}, {Knob::correction_rate}, {Knob::dt},
-                {Knob::broad_phase},           {Knob::substeps},        {Knob::integrator},
-                {Knob::friction_model},        {Knob::rotation},        {Knob::friction},
-                {Knob::solver},                {Knob::velocity_iterations}};
+        return {{Knob::relaxation_iterations},
+                {Knob::correction_rate},
+                {Knob::dt},
+                {Knob::broad_phase},
+                {Knob::substeps},
+                {Knob::integrator},
+                {Knob::friction_model},
+                {Knob::rotation},
+                {Knob::friction},
+                {Knob::solver},
+                {Knob::velocity_iterations},
+                {Knob::sleep}};
     }
     if (shapes <= kMiddleRain) {
-        return {{Knob::relaxation_iterations}, {Knob::correction_rate, Range::one}, {Knob::dt, Range::one},
-                {Knob::substeps, Range::one},  {Knob::integrator},                  {Knob::friction_model},
-                {Knob::rotation},              {Knob::friction},                    {Knob::solver}};
+        return {{Knob::relaxation_iterations},
+                {Knob::correction_rate, Range::one},
+                {Knob::dt, Range::one},
+                {Knob::substeps, Range::one},
+                {Knob::integrator},
+                {Knob::friction_model},
+                {Knob::rotation},
+                {Knob::friction},
+                {Knob::solver},
+                {Knob::sleep}};
     }
     return {};
 }
@@ -84,14 +100,13 @@ StudyResult box2d_target_study(const StudyContext& context) {
     const Measure measure = settled_overlap(seconds);
     StudyResult result;
     // Stage 5.2 as its scene files leave it: the grid, and the book's 15 passes.
-    result.rows.push_back(stage_row(source, {Stage::s5_2, "", "scene", scene.world},
-                                    context.repeats, measure));
+    result.rows.push_back(stage_row(source, {Stage::s5_2, "", "scene", scene.world}, context.repeats, measure));
     const Row ours = result.rows.front();
     // Stage 5.4's sequential impulse solver, with its defaults, on the same scene.
     SceneDescription solved = scene;
     solved.world.solver = Solver::sequential_impulse;
-    result.rows.push_back(stage_row(source, {Stage::s5_4, "solver", "sequential impulse", solved.world},
-                                    context.repeats, measure));
+    result.rows.push_back(
+        stage_row(source, {Stage::s5_4, "solver", "sequential impulse", solved.world}, context.repeats, measure));
     const Row solver = result.rows.back();
     std::string verdict;
     if (auto reference = box2d_row(source, context.repeats, measure)) {
@@ -101,9 +116,9 @@ StudyResult box2d_target_study(const StudyContext& context) {
                                : "stage 5.2 is " + figure(1.0 / ratio) + " times as fast as " + reference->setting;
         result.key_figures.push_back("Rain of 1000, stage 5.2 (grid, 15 passes) against " + reference->setting + ": " +
                                      figure(ours.cost_us) + " µs per step against " + figure(reference->cost_us) +
-                                     ": " + verdict +
-                                     "; deepest overlap once settled " + figure(ours.metrics.penetration_max) +
-                                     " px against " + figure(reference->metrics.penetration_max) + " px.");
+                                     ": " + verdict + "; deepest overlap once settled " +
+                                     figure(ours.metrics.penetration_max) + " px against " +
+                                     figure(reference->metrics.penetration_max) + " px.");
         result.key_figures.push_back("Rain of 1000, stage 5.4's sequential impulse solver against " +
                                      reference->setting + ": " + figure(solver.cost_us) + " µs per step against " +
                                      figure(reference->cost_us) + "; deepest overlap once settled " +
@@ -118,9 +133,10 @@ StudyResult box2d_target_study(const StudyContext& context) {
     result.markdown = "## Target: a rain of 1000 against Box2D\n\n" + scene_text(1000, seconds) +
                       " Stage 5.2 runs as its scene files leave it, with its grid broad phase and the book's 15 "
                       "relaxation passes; stage 5.4 with its sequential impulse solver at its defaults; Box2D 2.4 "
-                      "with continuous collision off, 8 velocity and 3 position iterations, sleeping off, the same scene scaled to metres (" + figure(kPixelsPerMetre) +
-                      " px to the metre) and the same dt.\n\n" +
-                      table(result.rows, columns) + verdict + "\n\n";
+                      "with continuous collision off, 8 velocity and 3 position iterations, sleeping off, the same "
+                      "scene scaled to metres (" +
+                      figure(kPixelsPerMetre) + " px to the metre) and the same dt.\n\n" + table(result.rows, columns) +
+                      verdict + "\n\n";
     return result;
 }
 

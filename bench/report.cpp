@@ -62,6 +62,8 @@ const std::vector<CsvColumn>& columns() {
         {"warm_starting", [](const Row& r) { return on_off(r.world.warm_starting); }},
         {"position_method", [](const Row& r) { return chosen(r.world.position_method); }},
         {"restitution_threshold", [](const Row& r) { return number(r.world.restitution_threshold); }},
+        {"sleep", [](const Row& r) { return on_off(r.world.sleep); }},
+        {"continuous", [](const Row& r) { return on_off(r.world.continuous); }},
         {"steps", [](const Row& r) { return std::to_string(r.steps); }},
         {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
         {"cost_us", [](const Row& r) { return number(r.cost_us); }},
@@ -117,14 +119,17 @@ std::string results_markdown(const RunFacts& facts, const std::vector<StudyResul
             (facts.repeats == 1 ? " timed run" : " timed runs") +
             " per setting, each on a fresh world, errors from the first. Every row names the engine that made it: "
             "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs), "
-            "5.4 (+ a contact solver) or Box2D; a setting runs on the oldest stage that can express it. "
-            "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each scene runs only as long "
+            "5.4 (+ a contact solver), 5.5 (+ sleeping, on by default), 5.6 (+ continuous collision, on by default) "
+            "or Box2D; a setting runs on the oldest stage that can express it. "
+            "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each "
+            "scene runs only as long "
             "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "
-            "10,000 steps, and the big scenes try fewer knobs. Costs are wall-clock times on a shared machine: "
-            "compare rows of one run, not runs of different days. Definitions and targets: bench/README.md.\n\n";
-    text += facts.box2d ? "Box2D reference: " + box2d_version() + ", " +
-                              std::to_string(kBox2dVelocityIterations) + " velocity and " +
-                              std::to_string(kBox2dPositionIterations) +
+            "10,000 steps, and the big scenes try fewer knobs. Costs are the processor time of the thread that steps "
+            "the engine (CLOCK_THREAD_CPUTIME_ID), not wall-clock time: the time a run waits for a core on a shared "
+            "machine is left out, but caches and memory are still shared, so compare rows of one run, not runs of "
+            "different days. Definitions and targets: bench/README.md.\n\n";
+    text += facts.box2d ? "Box2D reference: " + box2d_version() + ", " + std::to_string(kBox2dVelocityIterations) +
+                              " velocity and " + std::to_string(kBox2dPositionIterations) +
                               " position iterations, continuous collision off, sleeping off.\n\n"
                         : std::string(kNoBox2d) + ".\n\n";
     std::string key;

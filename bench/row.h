@@ -26,11 +26,11 @@ struct Metrics {
 };
 
 struct Row {
-    std::string study;    // what --only selects: "pyramid_10", "scale", ...
-    std::string scene;    // the scene run: "pyramid_10", "scale_500", ...
+    std::string study;          // what --only selects: "pyramid_10", "scale", ...
+    std::string scene;          // the scene run: "pyramid_10", "scale_500", ...
     Stage stage = Stage::s5_1;  // whose engine made the row
-    std::string varied;   // the key this row changes from the scene's own world, "" for none
-    std::string setting;  // the setting in words: "passes 8", "dt 1/120", "grid", "scene"
+    std::string varied;         // the key this row changes from the scene's own world, "" for none
+    std::string setting;        // the setting in words: "passes 8", "dt 1/120", "grid", "scene"
     // The world the row ran: for a stage, every key it reads written out (its defaults
     // included, stages.h: resolved), keys it does not read unset; for Box2D, the scene's.
     WorldDescription world;

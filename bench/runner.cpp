@@ -21,8 +21,7 @@ struct Runs {
     int repeats = 0;                        // timed runs made
 };
 
-Runs run_repeats(const WorldMaker& make, const WorldDescription& settings, int repeats,
-                 const Measure& measure) {
+Runs run_repeats(const WorldMaker& make, const WorldDescription& settings, int repeats, const Measure& measure) {
     if (repeats < 1) throw std::invalid_argument("run_repeats: repeats must be at least 1");
     Runs runs;
     std::vector<double> costs;

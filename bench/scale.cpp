@@ -92,17 +92,20 @@ StudyResult scale_study(const StudyContext& context) {
     result.figures.push_back({"scale.png", chart});
     result.key_figures.push_back(key + " (target for the grid: at most " + figure(kTargetExponent) + ").");
 
-    result.markdown = "## Scale: cost against the number of shapes, per broad phase\n\n"
-                      "Boxes and discs (8 to 14 px) on a jittered 20 px lattice, drifting at up to 20 px/s, no "
-                      "gravity: the same density whatever their number, so each shape has about the same "
-                      "neighbours (over the few steps timed they drift at most 4 px). Each broad phase runs on the "
-                      "stage that has it: the book's bounding circles on 5.1, all_pairs and the grid on 5.2. Each "
-                      "setting runs one warm-up step and " + std::to_string(kSteps) + " timed ones, up to " + std::to_string(kRepeats) + " times (fewer once " +
-                      figure(kRepeatSeconds) + " s have been timed). The growth exponent b of "
-                      "cost = a n^b is fitted by least squares on log-log axes over n = " + figure(kFitFrom) +
-                      " to " + figure(kFitTo) + ". **Target:** the grid's exponent at most " +
-                      figure(kTargetExponent) + ".\n\n" + verdicts + "\n" + table(result.rows, cost_columns()) +
-                      "![scale](scale.png)\n\n";
+    result.markdown =
+        "## Scale: cost against the number of shapes, per broad phase\n\n"
+        "Boxes and discs (8 to 14 px) on a jittered 20 px lattice, drifting at up to 20 px/s, no "
+        "gravity: the same density whatever their number, so each shape has about the same "
+        "neighbours (over the few steps timed they drift at most 4 px). Each broad phase runs on the "
+        "stage that has it: the book's bounding circles on 5.1, all_pairs and the grid on 5.2. Each "
+        "setting runs one warm-up step and " +
+        std::to_string(kSteps) + " timed ones, up to " + std::to_string(kRepeats) + " times (fewer once " +
+        figure(kRepeatSeconds) +
+        " s have been timed). The growth exponent b of "
+        "cost = a n^b is fitted by least squares on log-log axes over n = " +
+        figure(kFitFrom) + " to " + figure(kFitTo) + ". **Target:** the grid's exponent at most " +
+        figure(kTargetExponent) + ".\n\n" + verdicts + "\n" + table(result.rows, cost_columns()) +
+        "![scale](scale.png)\n\n";
     if (context.quick) result.markdown += "(Quick run: only up to 200 shapes, so the fit covers 100 to 200.)\n\n";
     return result;
 }

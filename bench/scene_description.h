@@ -22,10 +22,10 @@ using browser::Vec2;
 
 // The choices of the stages after the book, spelled as in scene files
 // (docs/scene_format.md).
-enum class BroadPhase { bounding_circle, all_pairs, grid };  // 5.2 on
-enum class Integrator { symplectic, explicit_euler };        // 5.3
-enum class FrictionModel { book, coulomb };                  // 5.3
-enum class Solver { book, sequential_impulse };              // 5.4
+enum class BroadPhase { bounding_circle, all_pairs, grid };     // 5.2 on
+enum class Integrator { symplectic, explicit_euler };           // 5.3
+enum class FrictionModel { book, coulomb };                     // 5.3
+enum class Solver { book, sequential_impulse };                 // 5.4
 enum class PositionMethod { split_impulse, baumgarte, relax };  // 5.4
 
 std::string_view spelling(BroadPhase phase);
@@ -47,17 +47,19 @@ struct WorldDescription {
     bool positional_correction = false;
     bool remove_out_of_bounds = false;
     // The keys of the stages after the book; unset, the stage's own default.
-    std::optional<BroadPhase> broad_phase;      // 5.2 on
-    std::optional<int> substeps;                // 5.3
-    std::optional<Integrator> integrator;       // 5.3
-    std::optional<FrictionModel> friction_model;  // 5.3
-    std::optional<bool> rotation;               // 5.3
-    std::optional<bool> friction;               // 5.3
-    std::optional<Solver> solver;               // 5.4
-    std::optional<int> velocity_iterations;     // 5.4
-    std::optional<bool> warm_starting;          // 5.4
+    std::optional<BroadPhase> broad_phase;          // 5.2 on
+    std::optional<int> substeps;                    // 5.3
+    std::optional<Integrator> integrator;           // 5.3
+    std::optional<FrictionModel> friction_model;    // 5.3
+    std::optional<bool> rotation;                   // 5.3
+    std::optional<bool> friction;                   // 5.3
+    std::optional<Solver> solver;                   // 5.4
+    std::optional<int> velocity_iterations;         // 5.4
+    std::optional<bool> warm_starting;              // 5.4
     std::optional<PositionMethod> position_method;  // 5.4
     std::optional<double> restitution_threshold;    // 5.4, px/s
+    std::optional<bool> sleep;                      // 5.5 on
+    std::optional<bool> continuous;                 // 5.6
 
     friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
 };

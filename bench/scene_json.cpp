@@ -91,6 +91,8 @@ std::vector<WorldEntry> world_entries(const WorldDescription& w) {
     if (w.warm_starting) entries.push_back({"warm_starting", flag(*w.warm_starting)});
     if (w.position_method) entries.push_back({"position_method", word(spelling(*w.position_method))});
     if (w.restitution_threshold) entries.push_back({"restitution_threshold", number(*w.restitution_threshold)});
+    if (w.sleep) entries.push_back({"sleep", flag(*w.sleep)});
+    if (w.continuous) entries.push_back({"continuous", flag(*w.continuous)});
     return entries;
 }
 

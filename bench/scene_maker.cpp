@@ -33,10 +33,13 @@ WorldDescription world_of(double width, double height, std::optional<double> gra
     return world;
 }
 
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 BodyDescription fixed_box(Vec2 center, double width, double height, double friction, double restitution) {
     return {.shape = ShapeKind::rectangle, .center = center, .width = width, .height = height, .mass = 0.0,
             .friction = friction, .restitution = restitution};
 }
+// clang-format on
 
 double uniform(browser::Random& random, double low, double high) { return low + (high - low) * random.next(); }
 
@@ -85,8 +88,8 @@ void add_walls(SceneDescription& scene, bool closed, double friction, double res
 
 SceneDescription pyramid(int rows) {
     constexpr double kSide = 30.0;
-    constexpr double kPitch = kSide + 1.0;          // 1 px between neighbours
-    constexpr double kRowPitch = kSide + 0.25;      // 0.25 px above the support
+    constexpr double kPitch = kSide + 1.0;      // 1 px between neighbours
+    constexpr double kRowPitch = kSide + 0.25;  // 0.25 px above the support
     const double base_width = rows * kPitch;
     SceneDescription scene;
     scene.world = world_of(std::max(800.0, base_width + 300.0), std::max(450.0, rows * kRowPitch + 150.0));
@@ -98,8 +101,8 @@ SceneDescription pyramid(int rows) {
         const double y = floor_top - 0.25 - kSide / 2 - row * kRowPitch;
         for (int k = 0; k < boxes; ++k) {
             const double x = middle + (k - (boxes - 1) / 2.0) * kPitch;
-            scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {x, y}, .width = kSide,
-                                    .height = kSide, .restitution = 0.0});
+            scene.bodies.push_back(
+                {.shape = ShapeKind::rectangle, .center = {x, y}, .width = kSide, .height = kSide, .restitution = 0.0});
         }
     }
     return scene;
@@ -113,8 +116,8 @@ SceneDescription rain(int shapes) {
     const int columns = static_cast<int>(std::ceil(1.5 * std::sqrt(static_cast<double>(shapes))));
     const int rows = (shapes + columns - 1) / columns;
     SceneDescription scene;
-    scene.world = world_of(columns * kPitch + 2 * (kWall + kMargin), rows * kPitch + kDrop + kWall + 2 * kMargin + 40.0,
-                           100.0);
+    scene.world =
+        world_of(columns * kPitch + 2 * (kWall + kMargin), rows * kPitch + kDrop + kWall + 2 * kMargin + 40.0, 100.0);
     add_walls(scene, false, 0.8, 0.2);
 
     browser::Random random(kRainSeed);
@@ -130,6 +133,8 @@ SceneDescription rain(int shapes) {
     return scene;
 }
 
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription gas() {
     constexpr int kColumns = 10;
     constexpr int kRows = 6;
@@ -184,6 +189,7 @@ SceneDescription heavy_on_light(double heavy) {
                             .mass = heavy, .friction = 0.8, .restitution = 0.2});
     return scene;
 }
+// clang-format on
 
 SceneDescription slope() {
     constexpr double kRadius = 20.0;
@@ -202,6 +208,8 @@ SceneDescription slope() {
     return scene;
 }
 
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription thin_wall() {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0, 0.0);
@@ -211,6 +219,7 @@ SceneDescription thin_wall() {
                             .friction = 0.0, .restitution = 0.5, .velocity = {1500.0, 0.0}});
     return scene;
 }
+// clang-format on
 
 SceneDescription scale(int shapes) {
     constexpr double kPitch = 20.0;
@@ -243,6 +252,8 @@ SceneDescription spread(int shapes) {
     return scene;
 }
 
+// A body's fields as a reader reads them, which the layout would put one a line:
+// clang-format off
 SceneDescription pair(PairKind kind) {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0);
@@ -262,7 +273,10 @@ SceneDescription pair(PairKind kind) {
     }
     return scene;
 }
+// clang-format on
 
+// A table of the scenes in aligned columns, which the layout would put one a line:
+// clang-format off
 std::vector<NamedScene> shipped() {
     return {{"pyramid_10", pyramid(10)}, {"pyramid_20", pyramid(20)}, {"rain_100", rain(100)},
             {"rain_400", rain(400)},     {"rain_1000", rain(1000)},   {"rain_1600", rain(1600)},
@@ -270,5 +284,6 @@ std::vector<NamedScene> shipped() {
             {"heavy_on_light", heavy_on_light()},
             {"slope", slope()},          {"thin_wall", thin_wall()}};
 }
+// clang-format on
 
 }  // namespace bench::scenes

@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
     engine::Core core(window, world);
     engine::buildScene(core, scene.bodies);
     const int steps_per_second = static_cast<int>(std::lround(1.0 / world.dt));
-    std::printf("rain_1000, %s, sleep off: shapes at or over %.1f px/s by each term alone\n", solver.c_str(), threshold);
+    std::printf("rain_1000, %s, sleep off: shapes at or over %.1f px/s by each term alone\n", solver.c_str(),
+                threshold);
     for (int second = 1; second <= static_cast<int>(seconds); ++second) {
         for (int step = 1; step < steps_per_second; ++step) core.update();
         std::vector<engine::Vec2> centers;
@@ -88,17 +89,19 @@ int main(int argc, char** argv) {
             linear.push_back(shape.velocity().length());
             spin.push_back(std::abs(shape.angularVelocity()) * shape.boundRadius());
             overlap.push_back(std::max(0.0, deepest[i] - world.slop) / world.dt);
-            moved.push_back((shape.center().distance(centers[i]) + std::abs(shape.angle() - angles[i]) * shape.boundRadius()) /
-                            world.dt);
+            moved.push_back(
+                (shape.center().distance(centers[i]) + std::abs(shape.angle() - angles[i]) * shape.boundRadius()) /
+                world.dt);
         }
         const auto over = [&](const std::vector<double>& values) {
             return std::count_if(values.begin(), values.end(), [&](double v) { return v >= threshold; });
         };
-        std::printf("t %2d s  |v| %4ld  |w|r %4ld  overlap %4ld  displacement %4ld   median/p90: |v| %.2f/%.2f  "
-                    "|w|r %.2f/%.2f  overlap %.2f/%.2f  displacement %.2f/%.2f\n",
-                    second, over(linear), over(spin), over(overlap), over(moved), quantile(linear, 0.5),
-                    quantile(linear, 0.9), quantile(spin, 0.5), quantile(spin, 0.9), quantile(overlap, 0.5),
-                    quantile(overlap, 0.9), quantile(moved, 0.5), quantile(moved, 0.9));
+        std::printf(
+            "t %2d s  |v| %4ld  |w|r %4ld  overlap %4ld  displacement %4ld   median/p90: |v| %.2f/%.2f  "
+            "|w|r %.2f/%.2f  overlap %.2f/%.2f  displacement %.2f/%.2f\n",
+            second, over(linear), over(spin), over(overlap), over(moved), quantile(linear, 0.5), quantile(linear, 0.9),
+            quantile(spin, 0.5), quantile(spin, 0.9), quantile(overlap, 0.5), quantile(overlap, 0.9),
+            quantile(moved, 0.5), quantile(moved, 0.9));
     }
     return 0;
 }

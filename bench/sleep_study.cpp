@@ -2,11 +2,11 @@
 // (bench/scenes/rain_1000.json) on both of 5.5's solvers, with sleep on and off, and on
 // Box2D 2.4 with its own sleeping, one run each. For every half second of simulated
 // time it writes the cost of a step and the share of the shapes asleep to
-// bench/results/sleep_rain_1000.csv, draws the cost against simulated time
+// bench/extra_results/sleep_rain_1000.csv, draws the cost against simulated time
 // (sleep_rain_1000.png), and prints the figures the README quotes: when the last shape
 // landed (the first step from which every moving shape touches something), the share
 // asleep 4 s later, and the cost of a settled step, sleep on against sleep off. The cost
-// of a window is its median step in processor time (see cpuSeconds and median). With sleep on, it also counts why shapes
+// of a window is its median step in processor time (bench/thread_clock.h, and median below). With sleep on, it also counts why shapes
 // are not asleep: how often a rest timer started again, and by which part of the rule.
 //
 //   build/sleep_study [SECONDS]    (default 20 s of simulated time)
@@ -17,7 +17,6 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -30,6 +29,7 @@
 #include "core.h"
 #include "scene_io.h"
 #include "scene_json.h"
+#include "thread_clock.h"
 
 namespace {
 
@@ -52,14 +52,6 @@ struct Run {
     std::vector<Window> windows;
     double landed_s = -1.0;  // every moving shape touching something from here on
 };
-
-// The processor time this thread has used: on a shared machine the wall clock also
-// counts the time the run waits for a core, which here doubled some steps.
-double cpuSeconds() {
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 // The median step of a window: the machine is shared, and one preemption of 10 ms
 // would add a third of a millisecond to the mean step of a half second.
@@ -122,9 +114,9 @@ Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, 
         Window figures{};
         for (int step = 0; step < kWindowSteps; ++step) {
             // Only the step is timed, not the counting around it.
-            const double start = cpuSeconds();
+            const double start = bench::thread_cpu_seconds();
             core.update();
-            step_seconds.push_back(cpuSeconds() - start);
+            step_seconds.push_back(bench::thread_cpu_seconds() - start);
             if (!sleep) continue;
             countRestarts(core, world.sleep_speed, figures.speed_restarts, figures.drift_restarts);
             // Held is only kept while sleep is on; a run with sleep off has no landing time.
@@ -151,9 +143,9 @@ Run runBox2d(const bench::SceneDescription& scene, int windows) {
     for (int w = 0; w < windows; ++w) {
         std::vector<double> step_seconds;
         for (int step = 0; step < kWindowSteps; ++step) {
-            const double before = cpuSeconds();
+            const double before = bench::thread_cpu_seconds();
             world->run(1);
-            step_seconds.push_back(cpuSeconds() - before);
+            step_seconds.push_back(bench::thread_cpu_seconds() - before);
         }
         run.windows.push_back({.end_s = (w + 1) * kWindowSteps * scene.world.dt,
                                .us_per_step = median(step_seconds) * 1e6,
@@ -193,7 +185,7 @@ int main(int argc, char** argv) {
     }
     if (bench::box2d_available()) runs.push_back(runBox2d(bench::read_scene(scene_file), windows));
 
-    const std::filesystem::path results(BENCH_RESULTS_DIR);
+    const std::filesystem::path results(BENCH_EXTRA_RESULTS_DIR);
     std::ofstream csv(results / "sleep_rain_1000.csv");
     csv << "engine,simulated_s,us_per_step,asleep_share,speed_restarts,drift_restarts,largest_island\n";
     bench::Chart chart{.title = "rain of 1000: the cost of a step as the rain settles",
@@ -203,8 +195,8 @@ int main(int argc, char** argv) {
     for (const Run& run : runs) {
         bench::Series series{.name = run.name, .joined = true};
         for (const Window& window : run.windows) {
-            csv << '"' << run.name << "\"," << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share << ','
-                << window.speed_restarts << ',' << window.drift_restarts << ',' << window.largest_island << '\n';
+            csv << '"' << run.name << "\"," << window.end_s << ',' << window.us_per_step << ',' << window.asleep_share
+                << ',' << window.speed_restarts << ',' << window.drift_restarts << ',' << window.largest_island << '\n';
             series.points.push_back({window.end_s, window.us_per_step, ""});
         }
         chart.series.push_back(series);
@@ -220,9 +212,11 @@ int main(int argc, char** argv) {
         const Window& last = on.windows.back();
         std::printf("  last half second: %.0f restarts by speed, %.0f by drift; the largest island holds %.0f shapes\n",
                     last.speed_restarts, last.drift_restarts, last.largest_island);
-        std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n", settledCost(on, settled),
-                    settledCost(off, settled), 100.0 * settledCost(on, settled) / settledCost(off, settled));
+        std::printf("  settled step (last 2 s): %.1f us with sleep on, %.1f us off: %.1f %%\n",
+                    settledCost(on, settled), settledCost(off, settled),
+                    100.0 * settledCost(on, settled) / settledCost(off, settled));
     }
-    if (runs.size() == 5) std::printf("%s: settled step (last 2 s): %.1f us\n", runs[4].name.c_str(), settledCost(runs[4], settled));
+    if (runs.size() == 5)
+        std::printf("%s: settled step (last 2 s): %.1f us\n", runs[4].name.c_str(), settledCost(runs[4], settled));
     return 0;
 }

@@ -113,8 +113,8 @@ BoundTests bound_tests(const StudyContext& context, const BookLoop& book_loop, S
         for (int k = 0; k < 2; ++k) {
             WorldDescription world = spread.world;
             world.relaxation_iterations = k == 0 ? kFewPasses : kManyPasses;
-            const std::string label = std::string(book_loop[c].name) + ", passes " +
-                                      std::to_string(world.relaxation_iterations);
+            const std::string label =
+                std::string(book_loop[c].name) + ", passes " + std::to_string(world.relaxation_iterations);
             rows[k] = stage_row({"speed", "spread_" + std::to_string(found.shapes), spread},
                                 setting_for(book_loop[c], world, label), context.repeats,
                                 [](BenchWorld& w, const WorldDescription&) {
@@ -144,9 +144,9 @@ struct Rains {
 Rains rains(const StudyContext& context, const BookLoop& book_loop, StudyResult& result) {
     Rains found;
     found.seconds = context.quick ? kQuickRainSeconds : kRainSeconds;
-    MarkdownTable table({"scene", "stage", "µs/step", "times as fast as 5.1", "passes per step",
-                         "exact tests per step", "exact tests skipped", "ns per computed pair per pass",
-                         "ns per candidate pair per pass", "overlap max (px)"});
+    MarkdownTable table({"scene", "stage", "µs/step", "times as fast as 5.1", "passes per step", "exact tests per step",
+                         "exact tests skipped", "ns per computed pair per pass", "ns per candidate pair per pass",
+                         "overlap max (px)"});
     struct RainRun {
         int shapes;
         Contender contender;
@@ -159,9 +159,9 @@ Rains rains(const StudyContext& context, const BookLoop& book_loop, StudyResult&
         const SceneDescription scene = scenes::rain(run.shapes);
         const std::string name = "rain_" + std::to_string(run.shapes);
         const long steps = steps_for(found.seconds, scene.world.dt);
-        const Row row = stage_row({"speed", name, scene}, setting_for(run.contender, scene.world, run.contender.name),
-                                  context.repeats,
-                                  [steps](BenchWorld& world, const WorldDescription&) { return rain_metrics(world, steps); });
+        const Row row = stage_row(
+            {"speed", name, scene}, setting_for(run.contender, scene.world, run.contender.name), context.repeats,
+            [steps](BenchWorld& world, const WorldDescription&) { return rain_metrics(world, steps); });
         const bool grid = run.contender.broad_phase == BroadPhase::grid;
         if (run.shapes == 400 && run.contender.stage == Stage::s5_1) found.book_400 = row.cost_us;
         if (run.shapes == 400 && run.contender.broad_phase == BroadPhase::bounding_circle) found.fast_400 = row.cost_us;
@@ -172,10 +172,9 @@ Rains rains(const StudyContext& context, const BookLoop& book_loop, StudyResult&
     }
     const SceneDescription rain1000 = scenes::rain(1000);
     const long box2d_steps = steps_for(found.seconds, rain1000.world.dt);
-    if (const auto box2d = box2d_row({"speed", "rain_1000", rain1000}, context.repeats,
-                                     [box2d_steps](BenchWorld& world, const WorldDescription&) {
-                                         return rain_metrics(world, box2d_steps);
-                                     })) {
+    if (const auto box2d = box2d_row(
+            {"speed", "rain_1000", rain1000}, context.repeats,
+            [box2d_steps](BenchWorld& world, const WorldDescription&) { return rain_metrics(world, box2d_steps); })) {
         found.box2d_1000 = box2d->cost_us;
         table.add(rain_cells("rain_1000", box2d->setting, *box2d, 0.0));
         result.rows.push_back(*box2d);
@@ -207,8 +206,8 @@ StudyResult speed_study(const StudyContext& context) {
     if (rain.box2d_1000 > 0) {
         const double ratio = rain.grid_1000 / rain.box2d_1000;
         key += "; rain of 1000 with the grid: " + figure(rain.grid_1000) + " µs per step against Box2D 2.4's " +
-               figure(rain.box2d_1000) + " (" + figure(ratio) + " times Box2D's cost; target " +
-               figure(kBox2dTarget) + ", " + against(ratio, kBox2dTarget, true) + ")";
+               figure(rain.box2d_1000) + " (" + figure(ratio) + " times Box2D's cost; target " + figure(kBox2dTarget) +
+               ", " + against(ratio, kBox2dTarget, true) + ")";
     }
     result.key_figures.push_back(key + ".");
     result.markdown =
@@ -216,15 +215,19 @@ StudyResult speed_study(const StudyContext& context) {
         "Stage 5.2 computes what 5.1 computes, bit for bit (`ctest -L identity`), in less time. The bound test: " +
         std::to_string(bound.shapes) +
         " discs spread so that no two touch, with the book's bounding circles, no pass and 1 (a pass that "
-        "finds nothing ends the step on 5.2); the difference over the " + figure(bound.pairs_per_pass) +
-        " pairs of the pass is the cost of one test, its loop included.\n\n" + bound.table +
-        "\nThe rains run " + figure(rain.seconds) + " s of simulated time (the pile forms). Per step, every pass "
+        "finds nothing ends the step on 5.2); the difference over the " +
+        figure(bound.pairs_per_pass) + " pairs of the pass is the cost of one test, its loop included.\n\n" +
+        bound.table + "\nThe rains run " + figure(rain.seconds) +
+        " s of simulated time (the pile forms). Per step, every pass "
         "counted: the passes run (5.2 ends a step after a pass that changed nothing), the exact tests computed, "
         "and the share of the exact tests the skip rule saved (a pair found apart whose shapes no resolution has "
         "touched since, broad_phase.h); then the step's whole cost over the pairs whose exact test was computed "
         "and over the candidate pairs the broad phase handed on. 5.1 counts no pairs. The book's JavaScript is "
-        "not run here: against 5.1 it was measured by hand at " + figure(kBookJsPer51) + " times 5.1's cost "
-        "on the rain of 400.\n\n" + rain.table;
+        "not run here: against 5.1 it was measured by hand at " +
+        figure(kBookJsPer51) +
+        " times 5.1's cost "
+        "on the rain of 400.\n\n" +
+        rain.table;
     return result;
 }
 

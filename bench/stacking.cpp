@@ -74,8 +74,8 @@ std::vector<const Row*> pass_rows(const std::vector<Row>& results) {
 
 std::string passes_give(const Row& row) {
     const int passes = row.world.relaxation_iterations;
-    return std::to_string(passes) + (passes == 1 ? " pass gives " : " passes give ") +
-           figure(*row.metrics.top_drift) + " px of top motion at " + figure(row.cost_us) + " µs per step";
+    return std::to_string(passes) + (passes == 1 ? " pass gives " : " passes give ") + figure(*row.metrics.top_drift) +
+           " px of top motion at " + figure(row.cost_us) + " µs per step";
 }
 
 // What each pass count buys, and the advice: the fewest passes whose top stays within a
@@ -113,8 +113,8 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
     plan.study = "pyramid_" + std::to_string(rows);
     plan.heading = "Stacking: a pyramid of " + std::to_string(rows) + " rows";
     plan.question = "A pyramid of " + std::to_string(rows * (rows + 1) / 2) +
-                    " boxes (30 px) standing on a static floor, 0.25 px apart at first, run for " +
-                    figure(settle) + " s to close the gaps and then " + figure(seconds) +
+                    " boxes (30 px) standing on a static floor, 0.25 px apart at first, run for " + figure(settle) +
+                    " s to close the gaps and then " + figure(seconds) +
                     " s more. *Top moved* is how far the top box's centre moved in those " + figure(seconds) +
                     " s (it should stay put); *overlap* is the deepest and the mean overlap of two "
                     "shapes at the end, measured by the collision oracle (oracle/collision_oracle.h), "
@@ -123,12 +123,16 @@ StudyResult stacking_study(const StudyContext& context, int rows) {
     // value of each other knob, and no broad phases (the scale study compares those).
     const bool small = rows <= 10;
     const Range range = small ? Range::all : Range::one;
-    plan.knobs = {{Knob::relaxation_iterations}, {Knob::correction_rate, range}, {Knob::dt, range},
-                  {Knob::substeps, range},       {Knob::integrator},             {Knob::friction_model},
+    plan.knobs = {{Knob::relaxation_iterations},
+                  {Knob::correction_rate, range},
+                  {Knob::dt, range},
+                  {Knob::substeps, range},
+                  {Knob::integrator},
+                  {Knob::friction_model},
                   {Knob::rotation}};
     if (small) plan.knobs.push_back({Knob::broad_phase});
-    plan.knobs.insert(plan.knobs.end(), {{Knob::solver}, {Knob::velocity_iterations}, {Knob::warm_starting},
-                                         {Knob::position_method}});
+    plan.knobs.insert(plan.knobs.end(),
+                      {{Knob::solver}, {Knob::velocity_iterations}, {Knob::warm_starting}, {Knob::position_method}});
     plan.measure = stacking(settle, seconds);
     plan.box2d = true;
     plan.error = {"top box moved (px)", [](const Metrics& m) { return m.top_drift; }, 1e-3};
@@ -171,13 +175,19 @@ StudyResult heavy_on_light_study(const StudyContext& context) {
     SweepPlan plan;
     plan.study = "heavy_on_light";
     plan.heading = "A heavy load: a box 100 times heavier than the slab under it";
-    plan.question = "A box of mass 100 (60 px) on a slab of mass 1 (100 x 20 px) on a static floor, 0.25 px apart "
-                    "at first, run for " + figure(seconds) + " s. *Overlap max* is the deepest overlap of two "
-                    "shapes seen over the run (looked at once a second, by the collision oracle): the slab pressed "
-                    "into the floor; *box moved* is how far the heavy box's centre moved, which is 0.25 px when it "
-                    "only closes the gap.";
-    plan.knobs = {{Knob::relaxation_iterations}, {Knob::solver}, {Knob::velocity_iterations},
-                  {Knob::warm_starting}, {Knob::position_method}};
+    plan.question =
+        "A box of mass 100 (60 px) on a slab of mass 1 (100 x 20 px) on a static floor, 0.25 px apart "
+        "at first, run for " +
+        figure(seconds) +
+        " s. *Overlap max* is the deepest overlap of two "
+        "shapes seen over the run (looked at once a second, by the collision oracle): the slab pressed "
+        "into the floor; *box moved* is how far the heavy box's centre moved, which is 0.25 px when it "
+        "only closes the gap.";
+    plan.knobs = {{Knob::relaxation_iterations},
+                  {Knob::solver},
+                  {Knob::velocity_iterations},
+                  {Knob::warm_starting},
+                  {Knob::position_method}};
     plan.measure = heavy_load(seconds);
     plan.box2d = true;
     plan.error = {"deepest overlap seen (px)", [](const Metrics& m) { return m.penetration_max; }, 1e-3};

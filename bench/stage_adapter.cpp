@@ -76,8 +76,8 @@ public:
     std::optional<PairCounts> pair_counts() const override {
         if (!totals_ || steps_ == 0) return std::nullopt;
         const auto steps = static_cast<double>(steps_);
-        return PairCounts{totals_->candidates / steps, totals_->narrow_tests / steps,
-                          totals_->skipped_tests / steps, totals_->passes / steps};
+        return PairCounts{totals_->candidates / steps, totals_->narrow_tests / steps, totals_->skipped_tests / steps,
+                          totals_->passes / steps};
     }
 
 protected:

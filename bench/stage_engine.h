@@ -1,5 +1,5 @@
 #pragma once
-// One chapter 5 stage's engine, as the bench drives it. Stages 5.1 to 5.4 all keep
+// One chapter 5 stage's engine, as the bench drives it. Stages 5.1 to 5.6 all keep
 // their engine in namespace engine under the same class names, so this interface
 // names no engine type: each stage gets its own implementation, made by one adapter
 // (stage_adapter.cpp) compiled once per stage (bench/CMakeLists.txt says how), and the
@@ -36,5 +36,7 @@ std::unique_ptr<StageEngine> s5_1_engine();
 std::unique_ptr<StageEngine> s5_2_engine();
 std::unique_ptr<StageEngine> s5_3_engine();
 std::unique_ptr<StageEngine> s5_4_engine();
+std::unique_ptr<StageEngine> s5_5_engine();
+std::unique_ptr<StageEngine> s5_6_engine();
 
 }  // namespace bench

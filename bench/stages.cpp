@@ -48,6 +48,8 @@ std::string stage_name(Stage stage) {
         case Stage::s5_2: return "5.2";
         case Stage::s5_3: return "5.3";
         case Stage::s5_4: return "5.4";
+        case Stage::s5_5: return "5.5";
+        case Stage::s5_6: return "5.6";
         case Stage::box2d: return box2d_version();
     }
     return "";
@@ -59,6 +61,8 @@ std::unique_ptr<StageEngine> stage_engine(Stage stage) {
         case Stage::s5_2: return s5_2_engine();
         case Stage::s5_3: return s5_3_engine();
         case Stage::s5_4: return s5_4_engine();
+        case Stage::s5_5: return s5_5_engine();
+        case Stage::s5_6: return s5_6_engine();
         case Stage::box2d: break;
     }
     throw std::invalid_argument("stage_engine: Box2D is not a stage of this book");
@@ -101,6 +105,8 @@ WorldDescription resolved(Stage stage, const WorldDescription& world) {
     write_default(*adapter, &W::position_method,
                   {PositionMethod::split_impulse, PositionMethod::baumgarte, PositionMethod::relax}, written);
     write_default(*adapter, &W::restitution_threshold, {30.0, 0.0}, written);
+    write_default(*adapter, &W::sleep, {true, false}, written);
+    write_default(*adapter, &W::continuous, {true, false}, written);
     return written;
 }
 

@@ -6,6 +6,8 @@
 //   5.3  ch5_demo/5.3_speed_vs_accuracy    + substeps, integrator, friction_model,
 //                                            rotation, friction
 //   5.4  ch5_demo/5.4_contact_solver       + solver and its knobs
+//   5.5  ch5_demo/5.5_sleeping             + sleep (its default: on)
+//   5.6  ch5_demo/5.6_continuous_collision + continuous (its default: on)
 // What a stage can vary is what its scene files may say: the bench asks the stage for
 // its world keys rather than keeping a table of its own.
 
@@ -21,12 +23,13 @@
 
 namespace bench {
 
-enum class Stage { s5_1, s5_2, s5_3, s5_4, box2d };
+enum class Stage { s5_1, s5_2, s5_3, s5_4, s5_5, s5_6, box2d };
 
 // Oldest first.
-inline constexpr std::array kChapter5Stages{Stage::s5_1, Stage::s5_2, Stage::s5_3, Stage::s5_4};
+inline constexpr std::array kChapter5Stages{Stage::s5_1, Stage::s5_2, Stage::s5_3,
+                                            Stage::s5_4, Stage::s5_5, Stage::s5_6};
 
-// "5.1", "5.2", "5.3", "5.4", or Box2D's own name and version ("Box2D 2.4").
+// "5.1" to "5.6", or Box2D's own name and version ("Box2D 2.4").
 std::string stage_name(Stage stage);
 
 // A chapter 5 stage's engine. Throws std::invalid_argument for Stage::box2d.

@@ -17,9 +17,8 @@ std::vector<ChartPoint> pareto_front(const std::vector<ChartPoint>& points) {
         const bool beaten = std::any_of(points.begin(), points.end(), [&](const ChartPoint& b) { return beats(b, a); });
         if (!beaten) front.push_back(a);
     }
-    std::stable_sort(front.begin(), front.end(), [](const ChartPoint& a, const ChartPoint& b) {
-        return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
+    std::stable_sort(front.begin(), front.end(),
+                     [](const ChartPoint& a, const ChartPoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     return front;
 }
 
@@ -28,8 +27,8 @@ double fitted_exponent(const std::vector<ChartPoint>& points, double x_min, doub
     // least-squares slope is b = sum (u - mean u)(v - mean v) / sum (u - mean u)^2.
     std::vector<std::pair<double, double>> logs;
     for (const ChartPoint& p : points) {
-        const bool usable = p.x >= x_min && p.x <= x_max && p.x > 0.0 && p.y > 0.0 && std::isfinite(p.x) &&
-                            std::isfinite(p.y);
+        const bool usable =
+            p.x >= x_min && p.x <= x_max && p.x > 0.0 && p.y > 0.0 && std::isfinite(p.x) && std::isfinite(p.y);
         if (usable) logs.emplace_back(std::log(p.x), std::log(p.y));
     }
     if (logs.empty()) return std::nan("");

@@ -13,8 +13,8 @@
 namespace bench {
 
 struct StudyContext {
-    bool quick = false;  // seconds, not minutes: fewer settings, shorter runs
-    int repeats = 3;     // timed runs per setting (the cost is their median)
+    bool quick = false;                // seconds, not minutes: fewer settings, shorter runs
+    int repeats = 3;                   // timed runs per setting (the cost is their median)
     std::filesystem::path scenes_dir;  // the shipped scene files
 };
 
@@ -26,7 +26,7 @@ struct Figure {
 struct StudyResult {
     std::vector<Row> rows;
     std::vector<Figure> figures;
-    std::string markdown;  // the study's section of results.md, from its "## " heading
+    std::string markdown;                  // the study's section of results.md, from its "## " heading
     std::vector<std::string> key_figures;  // one-line findings for the top of results.md
 };
 

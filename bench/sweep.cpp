@@ -60,12 +60,8 @@ std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
                 add("friction " + std::string(spelling(model)), [=](W& w) { w.friction_model = model; });
             }
             break;
-        case Knob::rotation:
-            add("rotation off", [](W& w) { w.rotation = false; });
-            break;
-        case Knob::friction:
-            add("friction off", [](W& w) { w.friction = false; });
-            break;
+        case Knob::rotation: add("rotation off", [](W& w) { w.rotation = false; }); break;
+        case Knob::friction: add("friction off", [](W& w) { w.friction = false; }); break;
         case Knob::solver:
             // Where nothing rests (no gravity) every collision should bounce, so the
             // restitution threshold is 0 there, as for Box2D's row (box2d_world.cpp).
@@ -97,6 +93,15 @@ std::vector<Variant> variants(const WorldDescription& base, Knob knob) {
                 });
             }
             break;
+        case Knob::sleep:
+            // 5.5 sleeps by default; the book's passes keep a pile creeping, so sleep pays
+            // with the sequential impulses (ch5_demo/5.5_sleeping/README.md).
+            add("sleep off", [](W& w) { w.sleep = false; });
+            add("SI, sleep on", [](W& w) {
+                w.solver = Solver::sequential_impulse;
+                w.sleep = true;
+            });
+            break;
     }
     return list;
 }
@@ -116,6 +121,7 @@ std::string knob_key(Knob knob) {
         case Knob::velocity_iterations: return "velocity_iterations";
         case Knob::warm_starting: return "warm_starting";
         case Knob::position_method: return "position_method";
+        case Knob::sleep: return "sleep";
     }
     return "";
 }
@@ -148,7 +154,8 @@ std::vector<Setting> one_at_a_time(const WorldDescription& base, const std::vect
     SettingList list;
     // Stage 5.4 runs a scene's own world as 5.3 does, bit for bit (its solver is the
     // book's unless a scene says otherwise: the identity test), so it has no row of its
-    // own for it; its rows are its solver's.
+    // own for it; its rows are its solver's. Stages 5.5 and 5.6 do have one: they sleep,
+    // and 5.6 sweeps fast shapes, unless a scene says otherwise.
     for (Stage stage : stages) {
         if (stage != Stage::s5_4) list.add({stage, "", "scene", base});
     }

@@ -5,10 +5,11 @@
 //   dt {1/30, 1/60, 1/120, 1/240}   broad_phase: each   substeps {1, 2, 4, 8}
 //   integrator: each   friction_model: each   rotation off   friction off
 //   solver sequential_impulse, and with it: velocity_iterations {2, 4, 8, 12, 16},
-//   warm_starting off, position_method: each
+//   warm_starting off, position_method: each   sleep off, and on with sequential_impulse
 // One at a time, so each row says what that one knob does. Each setting runs on the
 // oldest stage of the study that can express it (stages.h): passes, correction and dt
-// on the book's 5.1, the broad phase on 5.2, the rest on 5.3; a setting no stage of the
+// on the book's 5.1, the broad phase on 5.2, the rest on 5.3, the solver on 5.4 and
+// sleep on 5.5 (5.6 adds no knob of its own here); a setting no stage of the
 // study can express is not run. A setting its stage reads as one already listed for
 // that stage (the stage's own default, say) is not run twice.
 
@@ -33,7 +34,8 @@ enum class Knob {
     solver,               // 5.4: the sequential impulse solver with its defaults
     velocity_iterations,  // ... with 2, 4, 8, 12, 16 velocity iterations
     warm_starting,        // ... without warm starting
-    position_method       // ... with each way of removing overlap
+    position_method,      // ... with each way of removing overlap
+    sleep                 // 5.5: sleep off, and sleep on with the sequential impulse solver
 };
 
 // How many of a knob's values to try: all of them, or only the first that makes a new
@@ -46,8 +48,8 @@ struct Sweep {
 
 struct Setting {
     Stage stage = Stage::s5_1;
-    std::string varied;  // the knob's key in scene files, "" for the scene's own world
-    std::string label;   // for tables and charts: "passes 8", "dt 1/120", "grid", "scene"
+    std::string varied;      // the knob's key in scene files, "" for the scene's own world
+    std::string label;       // for tables and charts: "passes 8", "dt 1/120", "grid", "scene"
     WorldDescription world;  // as handed to the stage: keys it leaves unset are the stage's default
 };
 

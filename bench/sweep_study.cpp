@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include "markdown.h"
@@ -52,7 +53,7 @@ std::string pareto_line(const std::vector<Row>& rows, const ErrorAxis& error) {
 
 std::vector<Stage> stages_for(std::size_t bodies) {
     if (bodies < kBookStageMostBodies) return {kChapter5Stages.begin(), kChapter5Stages.end()};
-    return {Stage::s5_2, Stage::s5_3, Stage::s5_4};
+    return {std::next(kChapter5Stages.begin()), kChapter5Stages.end()};
 }
 
 SceneDescription bench_scene(const StudyContext& context, const std::string& name) {
@@ -104,13 +105,16 @@ Chart cost_error_chart(const std::string& title, const std::vector<Row>& rows, c
         by_name[name].points.push_back(point_of(row, error, point_label(row)));
     }
     for (const std::string& name : order) chart.series.push_back(by_name[name]);
-    chart.notes.push_back("each knob changed alone from the scene's own world, on the oldest stage that has it; "
-                          "outlined: the Pareto front");
+    chart.notes.push_back(
+        "each knob changed alone from the scene's own world, on the oldest stage that has it; "
+        "outlined: the Pareto front");
     const bool floored = std::any_of(rows.begin(), rows.end(), [&](const Row& row) {
         const std::optional<double> value = error.value(row.metrics);
         return value && std::abs(*value) < error.floor;
     });
-    if (floored) chart.notes.push_back("\"(below)\": an error under " + figure(error.floor) + ", drawn at " + figure(error.floor));
+    if (floored)
+        chart.notes.push_back("\"(below)\": an error under " + figure(error.floor) + ", drawn at " +
+                              figure(error.floor));
     return chart;
 }
 
@@ -133,8 +137,9 @@ StudyResult run_sweep(const StudyContext& context, const SweepPlan& plan) {
     columns.insert(columns.end(), plan.columns.begin(), plan.columns.end());
     std::string question = plan.question;
     if (stages.front() != Stage::s5_1) {
-        question += " Stage 5.1 is left out: its test of every pair would take most of the bench's time here, and "
-                    "5.2's grid finds the very same pairs.";
+        question +=
+            " Stage 5.1 is left out: its test of every pair would take most of the bench's time here, and "
+            "5.2's grid finds the very same pairs.";
     }
     result.markdown = "## " + plan.heading + "\n\n" + question + "\n\n" + table(result.rows, columns) +
                       pareto_line(result.rows, plan.error) + "![" + plan.study + "](" + file + ")\n\n";

@@ -57,28 +57,29 @@ StudyResult trajectory_study(const StudyContext& context) {
         }
         chart.series.push_back(series);
     }
-    chart.notes.push_back("the two lines coincide: both are off by g t dt / 2, symplectic below the parabola, explicit above");
+    chart.notes.push_back(
+        "the two lines coincide: both are off by g t dt / 2, symplectic below the parabola, explicit above");
     result.figures.push_back({"trajectory.png", chart});
-    result.key_figures.push_back("Projectile after " + figure(kSeconds) + " s: symplectic " +
-                                 figure(result.rows[1].metrics.trajectory_error) + " px and explicit " +
-                                 figure(result.rows[per_second.size() + 1].metrics.trajectory_error) +
-                                 " px from the parabola at dt 1/60 (g t dt / 2 = " +
-                                 figure(scenes::kProjectileGravity * kSeconds / 60 / 2) + " px), halving with dt.");
+    result.key_figures.push_back(
+        "Projectile after " + figure(kSeconds) + " s: symplectic " + figure(result.rows[1].metrics.trajectory_error) +
+        " px and explicit " + figure(result.rows[per_second.size() + 1].metrics.trajectory_error) +
+        " px from the parabola at dt 1/60 (g t dt / 2 = " + figure(scenes::kProjectileGravity * kSeconds / 60 / 2) +
+        " px), halving with dt.");
 
     std::vector<Column> columns = cost_columns();
     columns.push_back({"error (px)", [](const Row& r) { return figure(r.metrics.trajectory_error); }});
-    columns.push_back({"g t dt / 2 (px)", [](const Row& r) {
-                           return figure(r.world.gravity.length() * kSeconds * r.world.dt / 2);
-                       }});
-    result.markdown = "## Trajectory: a projectile per integrator and dt\n\n"
-                      "A disc thrown at (150, -150) px/s under gravity " + figure(scenes::kProjectileGravity) +
-                      " px/s² with nothing to hit, on stage " + stage_name(stage) +
-                      " (the integrator is its key); *error* is its distance from the exact parabola after " +
-                      figure(kSeconds) + " s. Under constant gravity both integrators are off by exactly "
-                      "g t dt / 2, symplectic Euler below the parabola (it moves with the velocity of the end "
-                      "of the step) and explicit Euler above it (the velocity of the start): halving dt halves "
-                      "the error, and the two cost the same.\n\n" +
-                      table(result.rows, columns) + "![trajectory](trajectory.png)\n\n";
+    columns.push_back(
+        {"g t dt / 2 (px)", [](const Row& r) { return figure(r.world.gravity.length() * kSeconds * r.world.dt / 2); }});
+    result.markdown =
+        "## Trajectory: a projectile per integrator and dt\n\n"
+        "A disc thrown at (150, -150) px/s under gravity " +
+        figure(scenes::kProjectileGravity) + " px/s² with nothing to hit, on stage " + stage_name(stage) +
+        " (the integrator is its key); *error* is its distance from the exact parabola after " + figure(kSeconds) +
+        " s. Under constant gravity both integrators are off by exactly "
+        "g t dt / 2, symplectic Euler below the parabola (it moves with the velocity of the end "
+        "of the step) and explicit Euler above it (the velocity of the start): halving dt halves "
+        "the error, and the two cost the same.\n\n" +
+        table(result.rows, columns) + "![trajectory](trajectory.png)\n\n";
     return result;
 }
 

@@ -65,12 +65,11 @@ StudyResult tunnelling_study(const StudyContext& context) {
     const auto book = std::find_if(result.rows.begin(), result.rows.end(), [](const Row& row) {
         return substeps_of(row.world) == 1 && dt_label(row.world.dt) == "dt 1/60";
     });
-    result.key_figures.push_back("Tunnelling: on stage " + stage_name(book->stage) +
-                                 ", at dt 1/60 (no sub-steps) the ball gets through the " +
-                                 figure(scenes::kWallThickness) + " px wall from " +
-                                 figure(*book->metrics.tunnel_speed, 4) + " px/s (" +
-                                 figure(*book->metrics.tunnel_speed * book->world.dt, 4) +
-                                 " px per step); stage 5.3's sub-steps raise the speed as substeps / dt.");
+    result.key_figures.push_back(
+        "Tunnelling: on stage " + stage_name(book->stage) + ", at dt 1/60 (no sub-steps) the ball gets through the " +
+        figure(scenes::kWallThickness) + " px wall from " + figure(*book->metrics.tunnel_speed, 4) + " px/s (" +
+        figure(*book->metrics.tunnel_speed * book->world.dt, 4) +
+        " px per step); stage 5.3's sub-steps raise the speed as substeps / dt.");
 
     std::vector<Column> columns = cost_columns();
     columns.push_back({"slowest passing speed (px/s)", [](const Row& r) { return figure(r.metrics.tunnel_speed, 4); }});
@@ -79,7 +78,8 @@ StudyResult tunnelling_study(const StudyContext& context) {
                        }});
     result.markdown =
         "## Tunnelling: a fast ball at a thin wall\n\n"
-        "A ball " + figure(2 * scenes::kWallBallRadius) + " px across starts " + figure(scenes::kWallGap) +
+        "A ball " +
+        figure(2 * scenes::kWallBallRadius) + " px across starts " + figure(scenes::kWallGap) +
         " px in front of a static wall " + figure(scenes::kWallThickness) +
         " px thick, no gravity, run by the book's 5.1 with one look per step and by 5.3 with sub-steps. "
         "The table gives the slowest speed at which it ends up past the wall (bisection to "

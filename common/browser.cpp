@@ -251,14 +251,16 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
     }
     // A stage that made its window without the options would draw --scale K at scale 1.
     if (window.document.canvas.scale() != options.scale) {
-        throw std::invalid_argument("browser::run: the window's canvas scale is not options.scale (make it with Window(options))");
+        throw std::invalid_argument(
+            "browser::run: the window's canvas scale is not options.scale (make it with Window(options))");
     }
     if (options.live.on) {
         note_interruptions();  // a live session ends by SIGINT or SIGTERM as a run does
         try {
-            const std::unique_ptr<Screen> screen = open_live_window(
-                {.title = options.live.title, .frame_ms = options.frame_ms, .events = options.live.events,
-                 .screenshot = options.live.screenshot});
+            const std::unique_ptr<Screen> screen = open_live_window({.title = options.live.title,
+                                                                     .frame_ms = options.frame_ms,
+                                                                     .events = options.live.events,
+                                                                     .screenshot = options.live.screenshot});
             return run_live(scripts, window, options, *screen);
         } catch (const LiveWindowError& error) {
             std::cerr << error.what() << '\n';

@@ -67,10 +67,9 @@ bool clip_side(double& u0, double& v0, double& u1, double& v1, double edge, bool
 
 // The part of s inside the box, one side at a time, or nothing.
 std::optional<Segment> clip(Segment s, const Box& box) {
-    const bool kept = clip_side(s.x0, s.y0, s.x1, s.y1, box.left, true) &&
-                      clip_side(s.x0, s.y0, s.x1, s.y1, box.right, false) &&
-                      clip_side(s.y0, s.x0, s.y1, s.x1, box.top, true) &&
-                      clip_side(s.y0, s.x0, s.y1, s.x1, box.bottom, false);
+    const bool kept =
+        clip_side(s.x0, s.y0, s.x1, s.y1, box.left, true) && clip_side(s.x0, s.y0, s.x1, s.y1, box.right, false) &&
+        clip_side(s.y0, s.x0, s.y1, s.x1, box.top, true) && clip_side(s.y0, s.x0, s.y1, s.x1, box.bottom, false);
     // Spans beyond the range of a double can still make a crossing overflow.
     if (!kept || !std::isfinite(s.x0 + s.y0 + s.x1 + s.y1)) return std::nullopt;
     return s;
@@ -112,9 +111,7 @@ std::uint8_t mix(std::uint8_t from, std::uint8_t to, double alpha) {
 struct CoverageMask {
     int i0 = 0, i1 = 0, j0 = 0, j1 = 0;  // the device pixels [i0, i1) x [j0, j1)
     std::vector<float> coverage;         // row by row; empty when the box is
-    float* row(int j) {
-        return &coverage[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(i1 - i0)];
-    }
+    float* row(int j) { return &coverage[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(i1 - i0)]; }
     float at(int i, int j) const {
         return coverage[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(i1 - i0) +
                         static_cast<std::size_t>(i - i0)];
@@ -189,17 +186,16 @@ void paint(Image& pixels, const CoverageMask& mask, Color pen) {
             if (c <= 0.0f) continue;
             const double alpha = c * (pen.a / 255.0);
             const Color under = pixels.at(i, j);
-            pixels.set(i, j, {mix(under.r, pen.r, alpha), mix(under.g, pen.g, alpha),
-                              mix(under.b, pen.b, alpha), mix(under.a, 255, alpha)});
+            pixels.set(i, j,
+                       {mix(under.r, pen.r, alpha), mix(under.g, pen.g, alpha), mix(under.b, pen.b, alpha),
+                        mix(under.a, 255, alpha)});
         }
     }
 }
 
 }  // namespace
 
-Canvas::Canvas(int width, int height, int scale) : width_(width), height_(height), scale_(1) {
-    setScale(scale);
-}
+Canvas::Canvas(int width, int height, int scale) : width_(width), height_(height), scale_(1) { setScale(scale); }
 
 void Canvas::setScale(int scale) {
     if (scale < 1 || scale > kMaxScale) throw std::invalid_argument("Canvas: scale must be 1 to 4");

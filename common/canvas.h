@@ -78,7 +78,9 @@ public:
     void rotate(double radians);
 
 private:
-    struct Point { double x, y; };
+    struct Point {
+        double x, y;
+    };
     struct Transform {  // x' = a x + c y + e ; y' = b x + d y + f  (canvas's setTransform order)
         double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
     };

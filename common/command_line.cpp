@@ -42,8 +42,8 @@ std::optional<T> parse_whole(std::string_view text) {
 int int_option(const char* name, const std::string& text, int low, int high) {
     const auto value = parse_whole<long long>(text);
     if (!value || *value < low || *value > high) {
-        throw UsageError(std::string(name) + ": must be a whole number from " + std::to_string(low) +
-                         " to " + std::to_string(high) + " (got " + in_quotes(text) + ")");
+        throw UsageError(std::string(name) + ": must be a whole number from " + std::to_string(low) + " to " +
+                         std::to_string(high) + " (got " + in_quotes(text) + ")");
     }
     return static_cast<int>(*value);
 }
@@ -52,8 +52,7 @@ std::uint64_t seed_option(const std::string& text) {
     const auto value = parse_whole<std::uint64_t>(text);
     if (!value) {
         throw UsageError("--seed: must be a whole number from 0 to " +
-                         std::to_string(std::numeric_limits<std::uint64_t>::max()) + " (got " +
-                         in_quotes(text) + ")");
+                         std::to_string(std::numeric_limits<std::uint64_t>::max()) + " (got " + in_quotes(text) + ")");
     }
     return *value;
 }
@@ -63,8 +62,8 @@ double frame_ms_option(const std::string& text) {
     // from_chars reads "nan" and "inf" as numbers, hence the isfinite test.
     if (!value || !std::isfinite(*value) || *value <= 0.0 || *value > kMaxFrameMs) {
         std::ostringstream message;
-        message << "--frame-ms: must be a number of milliseconds above 0 and at most " << kMaxFrameMs
-                << " (got " << in_quotes(text) << ")";
+        message << "--frame-ms: must be a number of milliseconds above 0 and at most " << kMaxFrameMs << " (got "
+                << in_quotes(text) << ")";
         throw UsageError(message.str());
     }
     return *value;
@@ -121,15 +120,17 @@ std::string help_footer(const StageDefaults& defaults) {
     for (const KeyHelp& line : keys) {
         footer += "\n  " + line.keys + std::string(widest - line.keys.size() + 2, ' ') + line.meaning;
     }
-    footer += "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
-              "F12 saves the page shown as <stage>_frame_NNNN.png in the current folder,\n"
-              "Escape or closing the window ends the session.";
+    footer +=
+        "\nLive, also: Space pauses and goes on, period runs one frame while paused,\n"
+        "F12 saves the page shown as <stage>_frame_NNNN.png in the current folder,\n"
+        "Escape or closing the window ends the session.";
     return footer;
 }
 
 // The program as the reader called it, with the options given that shape the run,
 // in the order of `given`.
-std::vector<std::string> replay_command(const CLI::App& app, int argc, const char* const* argv, const std::string& program,
+std::vector<std::string> replay_command(const CLI::App& app, int argc, const char* const* argv,
+                                        const std::string& program,
                                         const std::vector<std::pair<std::string, std::string>>& given) {
     std::vector<std::string> command{argc >= 1 && argv != nullptr && argv[0] != nullptr ? argv[0] : program};
     for (const auto& [name, value] : given) {
@@ -187,35 +188,43 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
     std::ostringstream default_frame_ms;
     default_frame_ms << 1000.0 / 60.0;
     app.add_option("--out", texts.out, "folder for the pictures (replaced by each run)")
-        ->type_name("DIR")->capture_default_str();
-    app.add_option("--frames", texts.frames, "how many animation frames to run")
-        ->type_name("N")->capture_default_str();
+        ->type_name("DIR")
+        ->capture_default_str();
+    app.add_option("--frames", texts.frames, "how many animation frames to run")->type_name("N")->capture_default_str();
     app.add_option("--from", texts.from,
                    "save pictures from frame F on; the frames before it run unseen (a replay's idle start)")
-        ->type_name("F")->capture_default_str();
+        ->type_name("F")
+        ->capture_default_str();
     app.add_option("--every", texts.every,
                    "also save every K-th frame as frame_NNNN.png, and all of them small on contact_sheet.png"
                    " (0: only final.png)")
-        ->type_name("K")->capture_default_str();
+        ->type_name("K")
+        ->capture_default_str();
     app.add_flag("--gif", texts.gif, "also write animation.gif, the page every N-th frame (see --gif-every)");
     app.add_flag("--no-gif", texts.no_gif, "write no animation.gif, even where the stage writes one by default");
-    app.add_option("--gif-every", texts.gif_every, "a GIF picture after frames 0, N, 2N, ...; each shows N frames' time")
-        ->type_name("N")->capture_default_str();
-    app.add_option("--seed", texts.seed, "seed of the random numbers")
-        ->type_name("S")->capture_default_str();
+    app.add_option("--gif-every", texts.gif_every,
+                   "a GIF picture after frames 0, N, 2N, ...; each shows N frames' time")
+        ->type_name("N")
+        ->capture_default_str();
+    app.add_option("--seed", texts.seed, "seed of the random numbers")->type_name("S")->capture_default_str();
     app.add_option("--keys", texts.keys, "key presses, e.g. \"f*3 g@10 up e*5@20\"")
-        ->type_name("SCRIPT")->capture_default_str();
+        ->type_name("SCRIPT")
+        ->capture_default_str();
     app.add_option("--frame-ms", texts.frame_ms, "simulated milliseconds per frame")
-        ->type_name("MS")->default_str(default_frame_ms.str());
-    app.add_option("--scale", texts.scale, "draw the page K times larger (1 to 4), lines and text included,"
-                                           " in the window and in the pictures")
-        ->type_name("K")->capture_default_str();
+        ->type_name("MS")
+        ->default_str(default_frame_ms.str());
+    app.add_option("--scale", texts.scale,
+                   "draw the page K times larger (1 to 4), lines and text included,"
+                   " in the window and in the pictures")
+        ->type_name("K")
+        ->capture_default_str();
     if (!defaults.overlay.empty()) {
         app.add_flag("--overlay", texts.overlay, "start with the overlay on: " + defaults.overlay);
     }
     app.add_flag("--live", texts.live, "play the page in a window, keys from the keyboard (Escape ends)");
-    app.add_option("--record", texts.record, "with --live: write the session's key presses to FILE as a key script"
-                                              " and print the command that replays it")
+    app.add_option("--record", texts.record,
+                   "with --live: write the session's key presses to FILE as a key script"
+                   " and print the command that replays it")
         ->type_name("FILE");
     // Test hooks, hidden from --help (an empty group): see live_window.h.
     app.add_option("--live-events", texts.live_events)->group("");
@@ -225,7 +234,8 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
         try {
             // CLI11 refuses a name that is already in the table: given twice, or a common one.
             app.add_option(option.name, texts.extra.at(option.name), option.help)
-                ->type_name(option.value_name)->capture_default_str();
+                ->type_name(option.value_name)
+                ->capture_default_str();
         } catch (const CLI::ConstructionError& error) {
             // A mistake in the stage's code, not in what the reader typed.
             throw std::logic_error("extra option " + in_quotes(option.name) + ": " + one_line(error.what()));
@@ -289,16 +299,15 @@ bool read_picture_options(const CLI::App& app, const OptionTexts& texts, const S
     }
     if (want_gif && !texts.live && frames_saved(shown, options.gif_every) > kMostPictures) {
         throw UsageError("--gif-every: " + std::to_string(shown) + " frames would make a GIF of " +
-                         std::to_string(frames_saved(shown, options.gif_every)) +
-                         " pictures, more than the " + std::to_string(kMostPictures) +
+                         std::to_string(frames_saved(shown, options.gif_every)) + " pictures, more than the " +
+                         std::to_string(kMostPictures) +
                          " a run may (a larger --gif-every, fewer --frames, or --no-gif)");
     }
     return want_gif;
 }
 
 // The key script: well formed, only the stage's keys, and no press after the last frame.
-void read_key_options(const CLI::App& app, const OptionTexts& texts, const KeySet& keys_of_stage,
-                      Options& options) {
+void read_key_options(const CLI::App& app, const OptionTexts& texts, const KeySet& keys_of_stage, Options& options) {
     try {
         options.keys = KeyScript::parse(texts.keys);
     } catch (const KeyScriptError& error) {
@@ -307,8 +316,8 @@ void read_key_options(const CLI::App& app, const OptionTexts& texts, const KeySe
     options.stage_keys = keys_of_stage;
     if (!options.stage_keys.empty()) {
         if (const auto stray = options.keys.firstKeyOutside(options.stage_keys)) {
-            throw UsageError("--keys: " + in_quotes(key_name(*stray)) + " is not a key of this stage (its keys: " +
-                             options.stage_keys.text() + ")");
+            throw UsageError("--keys: " + in_quotes(key_name(*stray)) +
+                             " is not a key of this stage (its keys: " + options.stage_keys.text() + ")");
         }
     }
     options.keys_text = texts.keys;

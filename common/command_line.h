@@ -35,13 +35,13 @@ struct KeyHelp {
 
 // What a stage's program does when run with no options.
 struct StageDefaults {
-    std::string id;           // "s1_1": names the default output folder out/<id>/
-    std::string title;        // "1.1 HTML5 Canvas": shown by --help
-    std::string keys;         // the default key script
-    int frames = 1;           // how many animation frames to run
-    int every = 0;            // also write every K-th frame (0: only the last)
-    bool gif = false;         // also write animation.gif (--no-gif turns it off again)
-    int gif_every = 2;        // one GIF picture every N-th frame
+    std::string id;                          // "s1_1": names the default output folder out/<id>/
+    std::string title;                       // "1.1 HTML5 Canvas": shown by --help
+    std::string keys;                        // the default key script
+    int frames = 1;                          // how many animation frames to run
+    int every = 0;                           // also write every K-th frame (0: only the last)
+    bool gif = false;                        // also write animation.gif (--no-gif turns it off again)
+    int gif_every = 2;                       // one GIF picture every N-th frame
     std::vector<ExtraOption> extra_options;  // the stage's own options, if any
     // Every key the page's script reacts to: --help lists them, and a key script that
     // presses any other key is refused. Empty: any key may be pressed.
@@ -57,17 +57,17 @@ inline constexpr Key kOverlayKey = Key::T;
 
 // A --live session: the page in a window, played from the keyboard (live.h).
 struct LiveOptions {
-    bool on = false;                    // --live
-    std::filesystem::path record;       // --record FILE: where the session's key script goes ("" for nowhere)
-    std::string title;                  // the window's title
-    std::string stage_id;               // "s4_4": names the pages F12 saves
+    bool on = false;                          // --live
+    std::filesystem::path record;             // --record FILE: where the session's key script goes ("" for nowhere)
+    std::string title;                        // the window's title
+    std::string stage_id;                     // "s4_4": names the pages F12 saves
     std::filesystem::path screenshot_folder;  // where F12 saves them: the current folder ("")
     // The command that replays a recorded session, but for its --keys, --frames and
     // picture options: the program as it was called, and every option given that shapes
     // the run (--seed, --frame-ms, --scale, the stage's own options).
     std::vector<std::string> replay_command;
-    int replay_every = 30;              // the --every the printed replay command uses
-    bool replay_gif = false;            // whether it adds --gif (the stage writes no GIF by default)
+    int replay_every = 30;    // the --every the printed replay command uses
+    bool replay_gif = false;  // whether it adds --gif (the stage writes no GIF by default)
     // Test hooks, hidden from --help (live_window.h): key events to push into the
     // window's event queue, and where to save the last picture the window showed.
     std::filesystem::path events;
@@ -82,15 +82,15 @@ struct Options {
     // session starts at its first key press so, and not with the idle wait before it.
     int from = 0;
     int every = 0;
-    bool gif = false;   // write animation.gif: a picture after frames 0, N, 2N, ... (N = gif_every)
+    bool gif = false;  // write animation.gif: a picture after frames 0, N, 2N, ... (N = gif_every)
     int gif_every = 2;
     std::uint64_t seed = 0;
     KeyScript keys;
     std::string keys_text;
     bool keys_given = false;  // --keys was on the command line (not the stage's default script)
     double frame_ms = 1000.0 / 60.0;
-    int scale = 1;       // device pixels per canvas pixel, along each axis (--scale)
-    KeySet stage_keys;   // the keys the stage's page reacts to (empty: any)
+    int scale = 1;      // device pixels per canvas pixel, along each axis (--scale)
+    KeySet stage_keys;  // the keys the stage's page reacts to (empty: any)
     LiveOptions live;
     bool overlay_offered = false;  // the stage has an overlay: kOverlayKey turns it on and off
     bool overlay = false;          // --overlay: it is on from the first frame

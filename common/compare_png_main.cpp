@@ -165,13 +165,14 @@ int compare_folders(const Settings& settings) {
 
 int main(int argc, char** argv) {
     Settings settings;
-    CLI::App app{"Compares PNG pictures by their pixels: two files, or every *.png of the folder "
-                 "EXPECTED with the file of the same name in the folder ACTUAL.",
-                 kProgram};
+    CLI::App app{
+        "Compares PNG pictures by their pixels: two files, or every *.png of the folder "
+        "EXPECTED with the file of the same name in the folder ACTUAL.",
+        kProgram};
     app.add_option("EXPECTED", settings.expected, "reference PNG file or folder")->required()->type_name("PATH");
     app.add_option("ACTUAL", settings.actual, "PNG file or folder to check")->required()->type_name("PATH");
-    auto* diff = app.add_option("--diff", settings.diff_file, "write the diff picture of two files here")
-                     ->type_name("FILE");
+    auto* diff =
+        app.add_option("--diff", settings.diff_file, "write the diff picture of two files here")->type_name("FILE");
     app.add_option("--diff-dir", settings.diff_dir, "write DIR/<name> for each picture that differs")
         ->type_name("DIR")
         ->excludes(diff);
@@ -216,17 +217,21 @@ int main(int argc, char** argv) {
     }
     try {
         const fs::path inputs[] = {settings.expected, settings.actual};
-        if (!settings.diff_file.empty()) browser::check_may_write(settings.diff_file, browser::WriteTarget::file, inputs);
-        if (!settings.diff_dir.empty()) browser::check_may_write(settings.diff_dir, browser::WriteTarget::folder, inputs);
+        if (!settings.diff_file.empty())
+            browser::check_may_write(settings.diff_file, browser::WriteTarget::file, inputs);
+        if (!settings.diff_dir.empty())
+            browser::check_may_write(settings.diff_dir, browser::WriteTarget::folder, inputs);
     } catch (const browser::OutputRefused& refused) {
         const fs::path& named = settings.diff_file.empty() ? settings.diff_dir : settings.diff_file;
-        std::cerr << kProgram << ": cannot write " << browser::in_quotes(named.string()) << ": " << refused.what() << "\n";
+        std::cerr << kProgram << ": cannot write " << browser::in_quotes(named.string()) << ": " << refused.what()
+                  << "\n";
         return kTrouble;
     }
     if (!settings.diff_dir.empty()) {
         fs::create_directories(settings.diff_dir, error);
         if (error) {
-            std::cerr << kProgram << ": cannot create " << settings.diff_dir.string() << ": " << error.message() << "\n";
+            std::cerr << kProgram << ": cannot create " << settings.diff_dir.string() << ": " << error.message()
+                      << "\n";
             return kTrouble;
         }
     }

@@ -67,9 +67,9 @@ struct Stop {
 struct Request {
     fs::path program, scene, out = "out/compare";
     std::string settings[2];
-    std::optional<int> ghost;  // the frame drawn faintly under every picture
-    bool trail = false;        // every earlier saved frame drawn faintly under each picture
-    std::vector<int> crop;  // x, y, width, height in canvas pixels; empty: the whole canvas
+    std::optional<int> ghost;          // the frame drawn faintly under every picture
+    bool trail = false;                // every earlier saved frame drawn faintly under each picture
+    std::vector<int> crop;             // x, y, width, height in canvas pixels; empty: the whole canvas
     std::vector<std::string> options;  // for the program, after --
 };
 
@@ -93,7 +93,8 @@ json read_json(const fs::path& file, const std::string& what) {
     std::ifstream in(file);
     if (!in) throw Stop{kRefused, "cannot read " + what + " " + browser::in_quotes(file.string())};
     json value = json::parse(in, nullptr, false);
-    if (!value.is_object()) throw Stop{kRefused, what + " " + browser::in_quotes(file.string()) + " is not a JSON object"};
+    if (!value.is_object())
+        throw Stop{kRefused, what + " " + browser::in_quotes(file.string()) + " is not a JSON object"};
     return value;
 }
 
@@ -148,7 +149,8 @@ void run_side(const Request& request, const Side& side, const fs::path& folder) 
         if (const std::size_t at = line.find(scene.string()); at != std::string::npos) {
             line.replace(at, scene.string().size(), scene.filename().string());
         }
-        throw Stop{status, "the " + std::string(side.name) + " run (" + browser::printable(side.setting) + "): " + line};
+        throw Stop{status,
+                   "the " + std::string(side.name) + " run (" + browser::printable(side.setting) + "): " + line};
     }
     fs::remove(complaint);
 }
@@ -177,7 +179,8 @@ struct Frame {
 std::vector<Frame> savedFrames(const fs::path& left, const fs::path& right, const fs::path& side, int scale) {
     std::vector<Frame> frames;
     for (const std::string& name : shared_pictures(left, right)) {
-        if (name != "final.png") frames.push_back({frame_number(name), browser::canvas_of(browser::read_png(side / name), scale)});
+        if (name != "final.png")
+            frames.push_back({frame_number(name), browser::canvas_of(browser::read_png(side / name), scale)});
     }
     return frames;
 }
@@ -260,17 +263,18 @@ void compare(const Request& request) {
     }
     folder.commit();
     std::cout << "wrote " << (out / "").string() << ": " << frames.size() + 1 << " joined pictures"
-              << (gif ? " and animation.gif" : "") << " (left "
-              << request.settings[0] << ", right " << request.settings[1] << ")\n";
+              << (gif ? " and animation.gif" : "") << " (left " << request.settings[0] << ", right "
+              << request.settings[1] << ")\n";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     Request request;
-    CLI::App app{"Runs a stage program on one scene with two settings of its world keys and joins "
-                 "their pictures side by side, each half labelled with its setting.",
-                 kProgram};
+    CLI::App app{
+        "Runs a stage program on one scene with two settings of its world keys and joins "
+        "their pictures side by side, each half labelled with its setting.",
+        kProgram};
     app.add_option("PROGRAM", request.program, "the stage program, e.g. build/s5_4_contact_solver")->required();
     app.add_option("SCENE", request.scene, "the scene file both runs start from")->required();
     app.add_option("LEFT", request.settings[0], "world keys for the left run, as a JSON object")->required();
@@ -279,8 +283,9 @@ int main(int argc, char** argv) {
     app.add_option("--ghost", request.ghost, "draw this frame's picture faintly under each one (a frame --every saves)")
         ->type_name("FRAME")
         ->check(CLI::NonNegativeNumber);
-    app.add_flag("--trail", request.trail,
-                 "draw every earlier frame the runs saved (--every) faintly under each picture: several exposures in one");
+    app.add_flag(
+        "--trail", request.trail,
+        "draw every earlier frame the runs saved (--every) faintly under each picture: several exposures in one");
     app.add_option("--crop", request.crop, "show only this part of each canvas, in canvas pixels")
         ->type_name("X,Y,W,H")
         ->delimiter(',')

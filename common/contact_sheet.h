@@ -10,11 +10,11 @@
 
 namespace browser {
 
-inline constexpr int kThumbnailScale = 3;   // a thumbnail is the page shrunk 3 times
-inline constexpr int kSheetColumns = 4;     // thumbnails a row
-inline constexpr int kSheetMargin = 10;     // pixels round and between the cells
-inline constexpr int kLabelHeight = 20;     // the band above a thumbnail for its label
-inline constexpr int kMostThumbnails = 100; // keeps a sheet of a long run a sensible size
+inline constexpr int kThumbnailScale = 3;                     // a thumbnail is the page shrunk 3 times
+inline constexpr int kSheetColumns = 4;                       // thumbnails a row
+inline constexpr int kSheetMargin = 10;                       // pixels round and between the cells
+inline constexpr int kLabelHeight = 20;                       // the band above a thumbnail for its label
+inline constexpr int kMostThumbnails = 100;                   // keeps a sheet of a long run a sensible size
 inline constexpr Color kSheetBackground{224, 224, 224, 255};  // light gray, so white pages stand out
 
 // The frames a run of `frames` animation frames that saves every `every`-th (> 0) shows

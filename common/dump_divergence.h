@@ -47,10 +47,10 @@ struct DumpTolerance {
 bool agree(double a, double b, DumpTolerance tolerance);
 
 enum class DivergenceKind {
-    value,  // a number differs beyond the tolerance
-    shape,  // body `index` is a rectangle in one dump, a circle in the other
+    value,       // a number differs beyond the tolerance
+    shape,       // body `index` is a rectangle in one dump, a circle in the other
     extra_body,  // one dump has more bodies at this step
-    steps_end,  // one dump has no rows for this step: its run did not update any more
+    steps_end,   // one dump has no rows for this step: its run did not update any more
 };
 
 struct DifferingBody {
@@ -62,10 +62,10 @@ struct DifferingBody {
 struct Divergence {
     DivergenceKind kind = DivergenceKind::value;
     long step = 0;
-    std::size_t index = 0;  // the body (value, shape, extra_body)
-    std::string shape;  // its shape in the first dump that has it
-    std::string_view field;  // the field (value)
-    double a = 0, b = 0;  // the two numbers (value)
+    std::size_t index = 0;     // the body (value, shape, extra_body)
+    std::string shape;         // its shape in the first dump that has it
+    std::string_view field;    // the field (value)
+    double a = 0, b = 0;       // the two numbers (value)
     bool a_is_longer = false;  // which dump has the extra body or the further steps
     // How many bodies each dump holds at this step, and at the step before (0 for step 0).
     std::size_t bodies_a = 0, bodies_b = 0, bodies_before_a = 0, bodies_before_b = 0;

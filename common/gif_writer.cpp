@@ -70,8 +70,8 @@ public:
     const std::vector<Color>& palette() const { return palette_; }
 
     std::uint8_t index_of(Color c) {
-        const std::uint32_t key = (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) |
-                                  (std::uint32_t{c.b} << 8) | c.a;
+        const std::uint32_t key =
+            (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) | (std::uint32_t{c.b} << 8) | c.a;
         if (has_last_ && key == last_key_) return last_index_;
         auto [slot, added] = known_.try_emplace(key, std::uint8_t{0});
         if (added) slot->second = nearest(on_white(c));
@@ -131,9 +131,10 @@ Rectangle changed_part(const std::vector<GifPixelType>& before, const std::vecto
         const auto first = std::mismatch(row_now, row_now + width, row_before).first;
         if (first == row_now + width) continue;
         // Searching backwards from the row's end finds the last difference.
-        const auto reversed = std::mismatch(std::make_reverse_iterator(row_now + width),
-                                            std::make_reverse_iterator(first),
-                                            std::make_reverse_iterator(row_before + width)).first;
+        const auto reversed =
+            std::mismatch(std::make_reverse_iterator(row_now + width), std::make_reverse_iterator(first),
+                          std::make_reverse_iterator(row_before + width))
+                .first;
         changed.left = std::min(changed.left, static_cast<int>(first - row_now));
         changed.right = std::max(changed.right, static_cast<int>(reversed.base() - row_now));
         changed.top = std::min(changed.top, y);

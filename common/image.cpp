@@ -24,8 +24,7 @@ void Image::paste(const Image& source, int x, int y) {
     if (first_column >= last_column) return;
     const std::size_t row_bytes = static_cast<std::size_t>(last_column - first_column) * 4;
     for (int row = first_row; row < last_row; ++row) {
-        const auto from = source.rgba.begin() +
-                          static_cast<std::ptrdiff_t>(source.offset(first_column, row));
+        const auto from = source.rgba.begin() + static_cast<std::ptrdiff_t>(source.offset(first_column, row));
         std::copy(from, from + static_cast<std::ptrdiff_t>(row_bytes),
                   rgba.begin() + static_cast<std::ptrdiff_t>(offset(x + first_column, y + row)));
     }

@@ -19,8 +19,8 @@ inline constexpr Color kBlack{0, 0, 0, 255};
 inline constexpr Color kWhite{255, 255, 255, 255};
 inline constexpr Color kBlue{0, 0, 255, 255};
 inline constexpr Color kRed{255, 0, 0, 255};
-inline constexpr Color kGreen{0, 128, 0, 255};    // CSS 'green'
-inline constexpr Color kOrange{255, 165, 0, 255}; // CSS 'orange'
+inline constexpr Color kGreen{0, 128, 0, 255};     // CSS 'green'
+inline constexpr Color kOrange{255, 165, 0, 255};  // CSS 'orange'
 inline constexpr Color kGray{128, 128, 128, 255};
 }  // namespace colors
 

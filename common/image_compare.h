@@ -7,8 +7,8 @@
 namespace browser {
 
 struct Tolerance {
-    int channel = 0;             // a pixel differs when some channel differs by more than this
-    double pixel_share = 0.0;    // the images match while at most this share of pixels differs
+    int channel = 0;           // a pixel differs when some channel differs by more than this
+    double pixel_share = 0.0;  // the images match while at most this share of pixels differs
 };
 
 // The smallest box holding every differing pixel, edges included, in the picture's
@@ -25,10 +25,8 @@ struct ImageDifference {
     double differing_share = 0.0;  // differing_pixels / pixel count
     int largest_channel_difference = 0;
     PixelBox region;  // where the differing pixels are: what a failure names
-    Image diff;  // differing pixels in red over a faded copy of the first image
-    bool within(const Tolerance& t) const {
-        return same_size && differing_share <= t.pixel_share;
-    }
+    Image diff;       // differing pixels in red over a faded copy of the first image
+    bool within(const Tolerance& t) const { return same_size && differing_share <= t.pixel_share; }
 };
 
 // Pictures of different sizes are compared over the box either one covers (same_size

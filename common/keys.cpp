@@ -25,13 +25,10 @@ std::optional<int> whole_number(std::string_view text, int low, int high) {
 }
 
 [[noreturn]] void reject(std::string_view token, const std::string& reason) {
-    throw KeyScriptError("bad key script token " + in_quotes(token) + ": " + reason +
-                         " (" + kValidKeys + ")");
+    throw KeyScriptError("bad key script token " + in_quotes(token) + ": " + reason + " (" + kValidKeys + ")");
 }
 
-bool is_space(char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
-}
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
 
 }  // namespace
 
@@ -191,18 +188,15 @@ std::size_t KeyScript::pressCount() const {
 std::size_t KeyScript::pressCount(const KeySet& keys) const {
     std::size_t count = 0;
     for (const auto& [frame, pressed] : presses_) {
-        count += static_cast<std::size_t>(std::count_if(pressed.begin(), pressed.end(), [&](Key key) { return keys.contains(key); }));
+        count += static_cast<std::size_t>(
+            std::count_if(pressed.begin(), pressed.end(), [&](Key key) { return keys.contains(key); }));
     }
     return count;
 }
 
-int KeyScript::firstFrame() const {
-    return presses_.empty() ? -1 : presses_.begin()->first;
-}
+int KeyScript::firstFrame() const { return presses_.empty() ? -1 : presses_.begin()->first; }
 
-int KeyScript::lastFrame() const {
-    return presses_.empty() ? -1 : presses_.rbegin()->first;
-}
+int KeyScript::lastFrame() const { return presses_.empty() ? -1 : presses_.rbegin()->first; }
 
 std::optional<Key> KeyScript::firstKeyOutside(const KeySet& keys) const {
     for (const auto& [frame, pressed] : presses_) {

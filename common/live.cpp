@@ -1,6 +1,5 @@
 #include "live.h"
 
-
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -30,8 +29,9 @@ std::string seconds_text(double seconds) {
 // A word as a POSIX shell reads it back: bare when it holds only characters the shell
 // takes literally, else in single quotes (a quote inside written as '\'').
 std::string shell_word(const std::string& word) {
-    const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                               "0123456789_-+=./,:@%") == std::string::npos;
+    const bool plain = !word.empty() && word.find_first_not_of(
+                                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                            "0123456789_-+=./,:@%") == std::string::npos;
     if (plain) return word;
     std::string quoted = "'";
     for (const char c : word) {
@@ -263,9 +263,9 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
                   << "; it was: " << script << '\n';
         return 1;
     }
-    std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
-              << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
-              << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
+    std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses") << " in "
+              << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to " << record.string()
+              << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
               << "  " << replay_command(options.live, frames, session.recorded().firstFrame()) << '\n';
     return session.screenshotFailed() ? 1 : 0;
 }

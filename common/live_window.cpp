@@ -74,7 +74,8 @@ std::map<int, std::vector<ScriptedEvent>> read_events(const std::filesystem::pat
         const SDL_Keycode key = name == "close" ? 0 : SDL_GetKeyFromName(name.c_str());
         if (at == std::string::npos || error != std::errc{} || stop != last || refresh < 1 ||
             (name != "close" && key == SDLK_UNKNOWN)) {
-            throw LiveWindowError("--live-events: bad token \"" + token + "\" (NAME@REFRESH, NAME an SDL key name or close)");
+            throw LiveWindowError("--live-events: bad token \"" + token +
+                                  "\" (NAME@REFRESH, NAME an SDL key name or close)");
         }
         events[refresh].push_back({key});
     }
@@ -100,9 +101,7 @@ bool display_named() {
     return false;
 }
 
-[[noreturn]] void fail(const std::string& what) {
-    throw LiveWindowError("--live: " + what + ": " + SDL_GetError());
-}
+[[noreturn]] void fail(const std::string& what) { throw LiveWindowError("--live: " + what + ": " + SDL_GetError()); }
 
 class SdlWindow final : public Screen {
 public:
@@ -114,8 +113,9 @@ public:
         // With no display named SDL tries one driver after another, may settle on one
         // that shows nothing, and runs a session no one sees until it is killed.
         if (!display_named()) {
-            throw LiveWindowError("--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
-                                  "SDL_VIDEODRIVER names a driver explicitly)");
+            throw LiveWindowError(
+                "--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
+                "SDL_VIDEODRIVER names a driver explicitly)");
         }
         if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) fail("cannot open a window");
     }
@@ -180,8 +180,8 @@ private:
         renderer_.reset(SDL_CreateRenderer(window_.get(), -1, SDL_RENDERER_PRESENTVSYNC));
         if (!renderer_) renderer_.reset(SDL_CreateRenderer(window_.get(), -1, 0));
         if (!renderer_) fail("cannot draw in the window");
-        texture_.reset(SDL_CreateTexture(renderer_.get(), SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width,
-                                         height));
+        texture_.reset(
+            SDL_CreateTexture(renderer_.get(), SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height));
         if (!texture_) fail("cannot make a picture of that size");
         SDL_SetTextureBlendMode(texture_.get(), SDL_BLENDMODE_NONE);  // copied as it is, alpha included
         SDL_SetRenderDrawColor(renderer_.get(), 0, 0, 0, 255);

@@ -34,7 +34,7 @@ struct LiveWindowError : std::runtime_error {
 
 struct LiveWindowSettings {
     std::string title;
-    double frame_ms = 1000.0 / 60.0;  // the shortest real time between two frames
+    double frame_ms = 1000.0 / 60.0;   // the shortest real time between two frames
     std::filesystem::path events;      // test hook: --live-events
     std::filesystem::path screenshot;  // test hook: --live-screenshot
 };

@@ -69,8 +69,7 @@ std::vector<std::string> shown_characters(std::string_view text, bool escape_quo
             case '\t': pieces.emplace_back("\\t"); break;
             case '\\': pieces.emplace_back("\\\\"); break;
             case '"': pieces.emplace_back(escape_quote ? "\\\"" : "\""); break;
-            default:
-                pieces.push_back(c < 0x20 || c == 0x7F ? hex_escape(c) : std::string(1, static_cast<char>(c)));
+            default: pieces.push_back(c < 0x20 || c == 0x7F ? hex_escape(c) : std::string(1, static_cast<char>(c)));
         }
         ++i;
     }
@@ -105,7 +104,7 @@ std::string first_words(std::string_view text, std::size_t longest) {
     constexpr std::size_t kMark = 3;  // "..."
     std::size_t end = longest - kMark;
     while (end > 0 && pieces[end] != " ") --end;  // the space the cut falls on, or before
-    if (end == 0) end = longest - kMark;           // one long word: cut inside it
+    if (end == 0) end = longest - kMark;          // one long word: cut inside it
     for (std::size_t i = 0; i < end; ++i) shown += pieces[i];
     return shown + "...";
 }

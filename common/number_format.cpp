@@ -65,7 +65,7 @@ std::string to_js_string(double value) {
     char buffer[64];
     const auto [end, error] =
         std::to_chars(buffer, buffer + sizeof buffer, std::fabs(value), std::chars_format::scientific);
-    if (error != std::errc()) return "NaN";  // cannot happen: 64 characters hold any double
+    if (error != std::errc()) return "NaN";     // cannot happen: 64 characters hold any double
     const std::string scientific(buffer, end);  // "d.ddde+XX" or "de-XX"
     const std::size_t e = scientific.find('e');
     std::string digits = scientific.substr(0, 1);

@@ -38,7 +38,8 @@ bool is_plain_file(const fs::path& path) {
 // The names in `folder`, sorted, so that a refusal always names the same first one.
 std::vector<std::string> sorted_names(const fs::path& folder) {
     std::vector<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -50,8 +51,10 @@ void check_replaceable(const fs::path& out, std::span<const fs::path> inputs) {
     for (const std::string& name : sorted_names(out)) {
         const bool listed = name == kManifest || written.contains(name);
         if (listed && is_plain_file(out / name)) continue;
-        throw OutputRefused("it holds " + in_quotes(name) + ", which no run wrote (a run replaces only a folder "
-                            "holding what its " + kManifest + " lists); move it away or choose another --out");
+        throw OutputRefused("it holds " + in_quotes(name) +
+                            ", which no run wrote (a run replaces only a folder "
+                            "holding what its " +
+                            kManifest + " lists); move it away or choose another --out");
     }
 }
 
@@ -73,8 +76,9 @@ void write_manifest(const fs::path& folder) {
            "# anything else in the folder makes it refuse.\n";
     for (const std::string& name : names) out << name << '\n';
     out.close();
-    if (!out) throw fs::filesystem_error("cannot write the manifest", folder / kManifest,
-                                         std::make_error_code(std::errc::io_error));
+    if (!out)
+        throw fs::filesystem_error("cannot write the manifest", folder / kManifest,
+                                   std::make_error_code(std::errc::io_error));
 }
 
 // "-<process id>". Built by appending: g++ 12 gives a false -Wrestrict warning
@@ -155,7 +159,8 @@ void OutputFolder::add_to_manifest(const fs::path& out, std::string_view name) {
 }
 
 bool is_picture_name(std::string_view name) {
-    if (name == kFinalPicture || name == kContactSheet || name == kAnimation || name == kUnfinishedAnimation) return true;
+    if (name == kFinalPicture || name == kContactSheet || name == kAnimation || name == kUnfinishedAnimation)
+        return true;
     constexpr std::string_view kPrefix = "frame_", kSuffix = ".png";
     if (!name.starts_with(kPrefix) || !name.ends_with(kSuffix) || name.size() <= kPrefix.size() + kSuffix.size()) {
         return false;

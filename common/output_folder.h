@@ -40,7 +40,6 @@ inline constexpr const char* kUnfinishedAnimation = "animation.gif.partial";  //
 // contact_sheet.png, animation.gif and its partial file).
 bool is_picture_name(std::string_view name);
 
-
 class OutputFolder {
 public:
     // Checks that `out` may be replaced and makes the staging folder. `inputs` are the

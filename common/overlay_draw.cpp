@@ -9,8 +9,8 @@
 namespace browser::overlay {
 namespace {
 
-constexpr double kShortestArrow = 0.01;  // px
-constexpr double kSmallestSweep = 0.001; // rad
+constexpr double kShortestArrow = 0.01;   // px
+constexpr double kSmallestSweep = 0.001;  // rad
 
 // The two strokes of a head at `head` for a shaft pointing along `direction` (unit).
 void head_strokes(Canvas& canvas, Vec2 head, Vec2 direction, double length) {

@@ -15,12 +15,12 @@ namespace browser::overlay {
 
 // How big an arrow's head is: each of its two strokes is this long, or 40 % of the
 // arrow when that is shorter, and this far off the shaft's direction.
-inline constexpr double kHeadLength = 7.0;    // px
-inline constexpr double kHeadAngle = 0.45;    // rad, about 26 degrees
+inline constexpr double kHeadLength = 7.0;  // px
+inline constexpr double kHeadAngle = 0.45;  // rad, about 26 degrees
 
 // How far a marker's cross reaches each way from its point, and where its label goes.
-inline constexpr double kMarkerReach = 3.0;       // px
-inline constexpr Vec2 kLabelOffset{5.0, -16.0};   // px, from the point to the label's top-left
+inline constexpr double kMarkerReach = 3.0;      // px
+inline constexpr Vec2 kLabelOffset{5.0, -16.0};  // px, from the point to the label's top-left
 
 // A straight line from `from` to `to` (a pair, a lever arm).
 void line(Canvas& canvas, Vec2 from, Vec2 to, Color color);

@@ -41,7 +41,6 @@ std::string printable(std::string_view line) {
     return text;
 }
 
-
 // Splits one line of text into pieces at most max_width pixels wide, breaking after the
 // last space that fits, or inside a word too long to fit at all. Continued pieces are
 // indented two spaces deeper than the line, so they read as part of the same entry.
@@ -102,8 +101,8 @@ void draw_text(Image& picture, std::string_view line, int x, int y, Color color,
     constexpr std::size_t kMostQuadsPerLetter = 16;
     std::vector<char> quads((text.size() + 1) * kMostQuadsPerLetter * kQuadBytes);
     stb_easy_font_spacing(kLetterSpacing);
-    const int count = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(),
-                                          static_cast<int>(quads.size()));
+    const int count =
+        stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(), static_cast<int>(quads.size()));
     for (int q = 0; q < count; ++q) {
         float top_left[2], bottom_right[2];  // corners 0 and 2 of the quad
         const char* quad = quads.data() + static_cast<std::size_t>(q) * kQuadBytes;

@@ -43,8 +43,8 @@ struct Window {
 struct StepCost {
     double dt_s = 1.0 / 60.0;  // the fixed step, s
     int substeps = 1;
-    int passes = 1;  // collision passes a sub-step (0 counts as 1: the pairs are still found)
-    std::size_t shapes = 0;  // at the start; each F or G press may add one more
+    int passes = 1;           // collision passes a sub-step (0 counts as 1: the pairs are still found)
+    std::size_t shapes = 0;   // at the start; each F or G press may add one more
     bool draws_pairs = true;  // every frame draws a line for every pair that collides
     // The memory a pair of shapes in contact holds during a step (the collision found,
     // a solver's contact and what it keeps for the next step), in bytes: at worst every

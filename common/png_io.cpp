@@ -31,9 +31,7 @@ constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', 
 }
 
 // The folder a file goes into: "." for a bare file name.
-fs::path folder_of(const fs::path& path) {
-    return path.has_parent_path() ? path.parent_path() : fs::path(".");
-}
+fs::path folder_of(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
 
 // stb_image_write hands the encoded bytes over in pieces; we collect them in memory so
 // that file errors are ours to report.
@@ -84,8 +82,7 @@ void write_png(const fs::path& path, const Image& image) {
 }
 
 Image decode_png(std::span<const unsigned char> bytes) {
-    if (bytes.size() < kPngSignature.size() ||
-        !std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin())) {
+    if (bytes.size() < kPngSignature.size() || !std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin())) {
         throw FileError("not a PNG file");
     }
     if (bytes.size() > kLargestPngFile) throw FileError("it is larger than a picture of a run can be");
@@ -116,7 +113,8 @@ Image read_png(const fs::path& path) {
     if (fs::is_directory(status)) fail(kDoing, path, "it is a folder");
     // A FIFO would wait for a writer for ever, a device such as /dev/zero never ends.
     if (fs::is_fifo(status)) fail(kDoing, path, "it is a FIFO, not a regular file");
-    if (fs::is_character_file(status) || fs::is_block_file(status)) fail(kDoing, path, "it is a device, not a regular file");
+    if (fs::is_character_file(status) || fs::is_block_file(status))
+        fail(kDoing, path, "it is a device, not a regular file");
     if (!fs::is_regular_file(status)) fail(kDoing, path, "it is not a regular file");
     if (fs::file_size(path, error) > kLargestPngFile) fail(kDoing, path, "it is larger than a picture of a run can be");
 

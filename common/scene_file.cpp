@@ -30,9 +30,7 @@ namespace browser {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-std::string_view shape_name(ShapeKind shape) {
-    return shape == ShapeKind::circle ? "circle" : "rectangle";
-}
+std::string_view shape_name(ShapeKind shape) { return shape == ShapeKind::circle ? "circle" : "rectangle"; }
 
 namespace {
 
@@ -58,9 +56,7 @@ std::string shortened(std::string text) {
 
 // The offending value as JSON text, with non-ASCII escaped: whatever the file holds, the
 // message gets no line break and no half of a UTF-8 character.
-std::string shown(const json& value) {
-    return shortened(value.dump(-1, ' ', true, json::error_handler_t::replace));
-}
+std::string shown(const json& value) { return shortened(value.dump(-1, ' ', true, json::error_handler_t::replace)); }
 
 [[noreturn]] void refuse_value(std::string where, std::string_view problem, const json& got) {
     std::string text(problem);
@@ -123,9 +119,9 @@ std::string read_text(const fs::path& file) {
     if (::fstat(fd, &status) != 0) cannot_read(std::strerror(errno));
     if (S_ISDIR(status.st_mode)) cannot_read("it is a folder");
     if (!S_ISREG(status.st_mode)) {
-        cannot_read(S_ISFIFO(status.st_mode) ? "it is a FIFO, not a regular file"
+        cannot_read(S_ISFIFO(status.st_mode)                             ? "it is a FIFO, not a regular file"
                     : S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) ? "it is a device, not a regular file"
-                                                                        : "it is not a regular file");
+                                                                         : "it is not a regular file");
     }
     const auto too_long = [&] {
         cannot_read("longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene file may hold");
@@ -372,8 +368,8 @@ std::vector<BodyKey> body_keys(ShapeKind shape) {
                                           {"angle", &B::angle, rules::kAngle},
                                           {"velocity", &B::velocity, rules::kSpeed},
                                           {"angular_velocity", &B::angular_velocity, rules::kTurnRate}};
-    const std::span<const BodyKey> sizes =
-        shape == ShapeKind::rectangle ? std::span<const BodyKey>(kRectangleSizes) : std::span<const BodyKey>(kCircleSizes);
+    const std::span<const BodyKey> sizes = shape == ShapeKind::rectangle ? std::span<const BodyKey>(kRectangleSizes)
+                                                                         : std::span<const BodyKey>(kCircleSizes);
     std::vector<BodyKey> keys{{"center", &B::center, rules::kPosition, kRequired}};
     keys.reserve(1 + sizes.size() + std::size(kAttributes));
     for (const BodyKey& key : sizes) keys.push_back(key);
@@ -432,7 +428,8 @@ std::vector<BodyDescription> read_bodies(const json& list, const std::string& pa
                          "); every step tests every pair of them");
     }
     std::vector<BodyDescription> bodies;
-    for (std::size_t i = 0; i < list.size(); ++i) bodies.push_back(read_body(list[i], element_path(path, i), stage_keys));
+    for (std::size_t i = 0; i < list.size(); ++i)
+        bodies.push_back(read_body(list[i], element_path(path, i), stage_keys));
     return bodies;
 }
 

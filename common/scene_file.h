@@ -99,8 +99,7 @@ inline constexpr NumberRule kSize{[](double v) { return v >= 0.01 && v <= 1e5; }
 // 0 makes a static body; a moving one needs an inverse mass and inertia to divide by.
 inline constexpr NumberRule kMass{[](double v) { return v == 0.0 || (v >= 1e-3 && v <= 1e6); },
                                   "must be 0 (static) or a number in [1e-3, 1e6]"};
-inline constexpr NumberRule kFriction{[](double v) { return v >= 0.0 && v <= 100.0; },
-                                      "must be a number in [0, 100]"};
+inline constexpr NumberRule kFriction{[](double v) { return v >= 0.0 && v <= 100.0; }, "must be a number in [0, 100]"};
 inline constexpr NumberRule kAngle{[](double v) { return v >= -1e6 && v <= 1e6; },
                                    "must be a number in [-1e6, 1e6] (rad)"};
 inline constexpr NumberRule kSpeed{[](double v) { return v >= -1e6 && v <= 1e6; },
@@ -115,8 +114,7 @@ inline constexpr NumberRule kFraction{[](double v) { return v >= 0.0 && v <= 1.0
 inline constexpr NumberRule kCanvasSize{[](double v) { return v > 0.0 && v <= 4096.0; },
                                         "must be a number in (0, 4096]"};
 // One simulated second takes 1/dt steps; below 1e-5 s a short run never ends.
-inline constexpr NumberRule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; },
-                                      "must be a number in [1e-5, 1]"};
+inline constexpr NumberRule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; }, "must be a number in [1e-5, 1]"};
 // A number of loop passes: whole (JSON does not tell 15.0 from 15), and small enough
 // that every step still ends soon.
 inline constexpr NumberRule kPassCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
@@ -133,21 +131,32 @@ public:
     WorldKey(std::string_view name, double& setting, NumberRule rule = rules::kFinite)
         : name_(name), target_(Number{&setting, rule}) {}
     // A whole number; `rule` must accept only values an int holds.
-    WorldKey(std::string_view name, int& setting, NumberRule rule)
-        : name_(name), target_(Count{&setting, rule}) {}
+    WorldKey(std::string_view name, int& setting, NumberRule rule) : name_(name), target_(Count{&setting, rule}) {}
     WorldKey(std::string_view name, bool& setting) : name_(name), target_(Flag{&setting}) {}
     WorldKey(std::string_view name, Vec2& setting, NumberRule rule = rules::kFinite)
         : name_(name), target_(Vector{&setting, rule}) {}
     // One word from a fixed list, each naming a value of the setting's enum.
     template <class Enum>
-        requires std::is_enum_v<Enum>
-    WorldKey(std::string_view name, Enum& setting, std::vector<std::pair<std::string_view, Enum>> words)
-        : name_(name), target_(Word{spellings(words), [&setting, words](std::size_t i) { setting = words[i].second; }}) {}
+    requires std::is_enum_v<Enum> WorldKey(std::string_view name, Enum& setting,
+                                           std::vector<std::pair<std::string_view, Enum>> words)
+        : name_(name),
+          target_(Word{spellings(words), [&setting, words](std::size_t i) { setting = words[i].second; }}) {}
 
-    struct Number { double* setting; NumberRule rule; };
-    struct Count { int* setting; NumberRule rule; };
-    struct Flag { bool* setting; };
-    struct Vector { Vec2* setting; NumberRule rule; };
+    struct Number {
+        double* setting;
+        NumberRule rule;
+    };
+    struct Count {
+        int* setting;
+        NumberRule rule;
+    };
+    struct Flag {
+        bool* setting;
+    };
+    struct Vector {
+        Vec2* setting;
+        NumberRule rule;
+    };
     struct Word {
         std::vector<std::string_view> spellings;
         std::function<void(std::size_t)> choose;  // sets the setting to the i-th word's value

@@ -50,8 +50,7 @@ Image with_start_ghost(const Image& picture, const Image& start) {
     return ghosted;
 }
 
-Image side_by_side(const Image& left, std::string_view left_label, const Image& right,
-                   std::string_view right_label) {
+Image side_by_side(const Image& left, std::string_view left_label, const Image& right, std::string_view right_label) {
     const int band = kLabelHeight;
     const int gap = kGapWidth;
     Image joined(left.width + gap + right.width, band + std::max(left.height, right.height));

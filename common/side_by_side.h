@@ -25,8 +25,7 @@ Image with_start_ghost(const Image& picture, const Image& start);
 // The two pictures side by side, kGapWidth apart, each under a band with its label in
 // the page's font at its normal size (a label need not grow with --scale, and a zoomed
 // crop has room for a long one). The taller sets the height; the other is padded white.
-Image side_by_side(const Image& left, std::string_view left_label, const Image& right,
-                   std::string_view right_label);
+Image side_by_side(const Image& left, std::string_view left_label, const Image& right, std::string_view right_label);
 
 inline constexpr int kGapWidth = 12;     // px between the two halves
 inline constexpr int kLabelHeight = 24;  // px of the band above each half

@@ -27,16 +27,14 @@ namespace {
 void append_number(std::string& line, double value) {
     constexpr int kRoundTripDigits = 17;  // enough to tell any two doubles apart
     char digits[32];                      // the longest, "-2.2250738585072014e-308", needs 24
-    const auto end = std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general,
-                                   kRoundTripDigits).ptr;
+    const auto end =
+        std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general, kRoundTripDigits).ptr;
     line.append(digits, end);
 }
 
 // errno after a failed stream operation, when the library set one; callers clear errno
 // first so that an old value from elsewhere is not blamed.
-std::string failure_reason() {
-    return errno != 0 ? std::strerror(errno) : "the write failed";
-}
+std::string failure_reason() { return errno != 0 ? std::strerror(errno) : "the write failed"; }
 
 bool is_shape_name(std::string_view shape) {
     return shape == shape_name(ShapeKind::rectangle) || shape == shape_name(ShapeKind::circle);
@@ -60,7 +58,8 @@ std::optional<std::string> not_placeable_in(const fs::path& path, const fs::path
 }  // namespace
 
 NonFiniteState::NonFiniteState(long step, std::size_t index, std::string_view shape)
-    : std::runtime_error("step " + std::to_string(step) + ": body " + std::to_string(index) + " (" + std::string(shape) +
+    : std::runtime_error("step " + std::to_string(step) + ": body " + std::to_string(index) + " (" +
+                         std::string(shape) +
                          ") has a position or velocity that is not a finite number; the scene is beyond what this "
                          "engine can compute, and nothing was written") {}
 

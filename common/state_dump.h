@@ -73,7 +73,7 @@ private:
     std::filesystem::path partial_;
     std::optional<Leftover> leftover_;  // partial_, should the run be interrupted
     std::filesystem::path out_folder_;  // the run's --out folder, "" for none
-    bool inside_out_ = false;          // path_ is inside the --out folder
+    bool inside_out_ = false;           // path_ is inside the --out folder
     std::ofstream out_;
     bool finished_ = false;
 };

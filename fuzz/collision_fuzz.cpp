@@ -108,8 +108,8 @@ std::string describe(const engine::RigidShape& a, const engine::RigidShape& b, c
                           s.center().y, static_cast<const engine::Circle&>(s).radius(), s.angle());
         } else {
             const auto& r = static_cast<const engine::Rectangle&>(s);
-            std::snprintf(text, sizeof text, "rectangle center (%.17g, %.17g) %.17g x %.17g angle %.17g",
-                          r.center().x, r.center().y, r.width(), r.height(), r.angle());
+            std::snprintf(text, sizeof text, "rectangle center (%.17g, %.17g) %.17g x %.17g angle %.17g", r.center().x,
+                          r.center().y, r.width(), r.height(), r.angle());
         }
         return std::string(text);
     };

@@ -42,7 +42,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text(reinterpret_cast<const char*>(data), size);
     engine::WorldSettings world = engine::kBookWorld;
     try {
-        for (const browser::BodyDescription& body : browser::read_scene_text(text, "fuzz.json", engine::worldKeys(world)))
+        for (const browser::BodyDescription& body :
+             browser::read_scene_text(text, "fuzz.json", engine::worldKeys(world)))
             build(body);
     } catch (const browser::SceneError& refusal) {
         fuzz::require(fuzz::one_line(refusal.what()), "a refusal is one line:", refusal.what());

@@ -19,8 +19,6 @@ inline Shape outline(const engine::RigidShape& shape) {
 }
 
 // > 0: the two shapes overlap by that much; < 0: they are apart.
-inline double depth(const engine::RigidShape& a, const engine::RigidShape& b) {
-    return depth(outline(a), outline(b));
-}
+inline double depth(const engine::RigidShape& a, const engine::RigidShape& b) { return depth(outline(a), outline(b)); }
 
 }  // namespace oracle

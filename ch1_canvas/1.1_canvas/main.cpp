@@ -7,6 +7,8 @@
 
 namespace {
 
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s1_1",
     .title = "1.1 HTML5 Canvas: the drawing core and the user control script",
@@ -19,6 +21,7 @@ const browser::StageDefaults kStage{
         {"g", "draw a random circle"},
     },
 };
+// clang-format on
 
 constexpr const char* kHelp =
     "HTML5 Canvas project\n"

@@ -8,6 +8,8 @@
 
 namespace {
 
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s2_1",
     .title = "2.1 Rigid Shape: rectangles and circles in one object list",
@@ -21,6 +23,7 @@ const browser::StageDefaults kStage{
         {"f g", "a random rectangle / circle"},
     },
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -11,10 +11,10 @@ constexpr double kBorderThickness = 3.0;
 void buildScene(Core& core) {
     const double width = core.width();
     const double height = core.height();
-    core.add(Rectangle({width / 2, 0}, width, kBorderThickness));       // top
-    core.add(Rectangle({width / 2, height}, width, kBorderThickness));  // bottom
-    core.add(Rectangle({0, height / 2}, kBorderThickness, height));     // left
-    core.add(Rectangle({width, height / 2}, kBorderThickness, height)); // right
+    core.add(Rectangle({width / 2, 0}, width, kBorderThickness));        // top
+    core.add(Rectangle({width / 2, height}, width, kBorderThickness));   // bottom
+    core.add(Rectangle({0, height / 2}, kBorderThickness, height));      // left
+    core.add(Rectangle({width, height / 2}, kBorderThickness, height));  // right
 }
 
 }  // namespace engine

@@ -10,6 +10,8 @@ namespace {
 
 // Frame 0: walk the cursor left, drop five shapes along a line, turn three of them
 // and pin one in place. Frame 60: move the cursor up and drop two more.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s2_2",
     .title = "2.2 Core Engine Loop: fixed updates, moving and turning shapes",
@@ -26,6 +28,7 @@ const browser::StageDefaults kStage{
         {"r", "reset: keep only the first five objects"},
     },
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

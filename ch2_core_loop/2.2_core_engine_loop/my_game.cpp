@@ -8,16 +8,16 @@ namespace {
 constexpr double kBorderThickness = 3.0;
 constexpr double kCursorSize = 3.0;
 constexpr bool kFixed = true;
-}
+}  // namespace
 
 void buildScene(Core& core) {
     const double width = core.width();
     const double height = core.height();
     core.add(Rectangle({width / 2, height / 2}, kCursorSize, kCursorSize, kFixed));
-    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kFixed));       // top
-    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kFixed));  // bottom
-    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kFixed));     // left
-    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kFixed)); // right
+    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kFixed));        // top
+    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kFixed));   // bottom
+    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kFixed));      // left
+    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kFixed));  // right
 }
 
 }  // namespace engine

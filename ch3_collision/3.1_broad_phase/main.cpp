@@ -12,6 +12,8 @@ namespace {
 // turned rectangle with a circle just above it, apart but within each other's bounding
 // circles (Figure 3-5); a lone circle at the right. Frame 40: the middle circle moves
 // 20 px up, out of reach. Frame 80: the lone circle joins the pair at the left.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s3_1",
     .title = "3.1 Broad Phase Method: bounding circles, overlapping pairs in green",
@@ -28,6 +30,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the bounding circles, and each pair the broad phase passed with its test",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -31,14 +31,15 @@ constexpr Color kPairColor{160, 0, 200, 255};     // purple: a pair the broad ph
 void drawBroadPhase(Sheet& sheet, const Core& core) {
     for (std::size_t i = Physics::kFirstTestedObject; i < core.objectCount(); ++i) {
         const RigidShape& shape = core.object(i);
-        if (shape.type() == ShapeType::Rectangle) draw::ring(sheet.canvas, shape.center(), shape.boundRadius(), kBoundColor);
+        if (shape.type() == ShapeType::Rectangle)
+            draw::ring(sheet.canvas, shape.center(), shape.boundRadius(), kBoundColor);
     }
     for (const Collision& pair : core.physics().collisions()) {
         const RigidShape& a = core.object(pair.first);
         const RigidShape& b = core.object(pair.second);
         draw::line(sheet.canvas, a.center(), b.center(), kPairColor);
-        const std::string test = browser::to_precision(a.center().distance(b.center()), 3) + " <= " +
-                                 browser::to_precision(a.boundRadius() + b.boundRadius(), 3);
+        const std::string test = browser::to_precision(a.center().distance(b.center()), 3) +
+                                 " <= " + browser::to_precision(a.boundRadius() + b.boundRadius(), 3);
         sheet.labels.place(sheet.canvas, (a.center() + b.center()) * 0.5 + Vec2{4, 2}, kPairColor, test);
     }
     const std::size_t tested =
@@ -47,7 +48,7 @@ void drawBroadPhase(Sheet& sheet, const Core& core) {
     sheet.legend.push_back({kBoundColor, "bounding circle of a rectangle"});
     sheet.legend.push_back({kPairColor, "passed: distance <= r1 + r2"});
     sheet.legend.push_back({kPairColor, std::to_string(core.physics().collisions().size()) + " of " +
-                                      std::to_string(pairs) + " pairs passed"});
+                                            std::to_string(pairs) + " pairs passed"});
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ namespace {
 // in the middle; a rectangle and a circle on the cursor at the right. Frame 40: the
 // middle right circle moves 20 px down. Frame 80: it turns and moves 10 px left,
 // deeper in.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s3_2",
     .title = "3.2 Circle Collision Detection: collision info between circles",
@@ -28,6 +30,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info of each colliding pair: start, end, normal and depth",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -7,9 +7,7 @@ namespace engine {
 // The corners are the points farthest from the centre, half a diagonal away, so the
 // bounding circle has half the diagonal as its radius.
 Rectangle::Rectangle(Vec2 center, double width, double height)
-    : RigidShape(ShapeType::Rectangle, center, std::hypot(width, height) / 2),
-      width_(width),
-      height_(height) {
+    : RigidShape(ShapeType::Rectangle, center, std::hypot(width, height) / 2), width_(width), height_(height) {
     const double half_w = width / 2;
     const double half_h = height / 2;
     vertex_ = {

@@ -13,6 +13,8 @@ namespace {
 // right a rectangle inside a circle, and a second circle over the first. The cursor
 // then goes up out of the way. Frame 40: the turned rectangle at the left turns more.
 // Frame 80: the diamond moves 10 px into the rectangle beside it.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s3_3",
     .title = "3.3 Rectangle Collision: the support-point SAT between rectangles",
@@ -29,6 +31,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info of each colliding pair: start, end, normal and depth",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -9,8 +9,8 @@ namespace {
 // Rectangle sides are 10 to 40 px, circle radii 20 to 30 px.
 constexpr double kSideMin = 10.0, kSideRange = 30.0;
 constexpr double kRadiusMin = 20.0, kRadiusRange = 10.0;
-constexpr double kMoveStep = 10.0;   // px per W/A/S/D press
-constexpr double kTurnStep = 0.1;    // rad per Q/E press
+constexpr double kMoveStep = 10.0;  // px per W/A/S/D press
+constexpr double kTurnStep = 0.1;   // rad per Q/E press
 }  // namespace
 
 void UserControl::onKeyDown(browser::Key key) {
@@ -42,8 +42,6 @@ void UserControl::spawnRectangle(Vec2 center) {
     core_.add(Rectangle(center, width, height));
 }
 
-void UserControl::spawnCircle(Vec2 center) {
-    core_.add(Circle(center, random_.next() * kRadiusRange + kRadiusMin));
-}
+void UserControl::spawnCircle(Vec2 center) { core_.add(Circle(center, random_.next() * kRadiusRange + kRadiusMin)); }
 
 }  // namespace engine

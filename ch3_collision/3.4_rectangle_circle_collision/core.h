@@ -18,8 +18,8 @@ namespace engine {
 
 // The world advances in fixed steps of 1/60 s, whatever the frame rate.
 inline constexpr double kFPS = 60.0;
-inline constexpr double kFrameTime = 1.0 / kFPS;   // seconds per update
-inline constexpr double kMPF = 1000.0 / kFPS;      // milliseconds per update
+inline constexpr double kFrameTime = 1.0 / kFPS;  // seconds per update
+inline constexpr double kMPF = 1000.0 / kFPS;     // milliseconds per update
 
 // The timing half of the engine loop. Frames come when the browser is ready to draw,
 // and their length varies; the world must still move in equal steps so it behaves the

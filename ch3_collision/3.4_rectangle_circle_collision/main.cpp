@@ -12,6 +12,8 @@ namespace {
 // corner, in the middle over its right side, at the right centred on it. The cursor
 // then goes up out of the way. Frame 40: the left rectangle turns. Frame 80: the middle
 // circle moves 20 px up and 10 px left, past the end of the side, to the corner.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s3_4",
     .title = "3.4 Rectangle Circle Collision: corner, side and inside",
@@ -28,6 +30,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info of each colliding pair: start, end, normal and depth",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

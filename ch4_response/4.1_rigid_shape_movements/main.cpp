@@ -22,6 +22,8 @@ namespace {
 // static. The thrown shapes fly parabolas under gravity (0, 10) and pass through each
 // other: this project moves shapes but does not yet respond to collisions. Object 5
 // stays selected, so the echo shows its velocity changing.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_1",
     .title = "4.1 Rigid Shape Movements: symplectic Euler under gravity",
@@ -50,6 +52,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, and each moving shape's velocity and spin",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -8,16 +8,16 @@ namespace {
 constexpr double kBorderThickness = 3.0;
 constexpr double kCursorSize = 3.0;
 constexpr PhysicalAttributes kStatic{.mass = 0.0};
-}
+}  // namespace
 
 void buildScene(Core& core) {
     const double width = core.width();
     const double height = core.height();
     core.add(Rectangle({width / 2, height / 2}, kCursorSize, kCursorSize, kStatic));
-    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kStatic));       // top
-    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kStatic));  // bottom
-    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kStatic));     // left
-    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kStatic)); // right
+    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kStatic));        // top
+    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kStatic));   // bottom
+    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kStatic));      // left
+    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kStatic));  // right
 }
 
 }  // namespace engine

@@ -12,8 +12,7 @@ namespace engine {
 namespace {
 
 RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
-    const PhysicalAttributes attributes{
-        .mass = body.mass, .friction = body.friction, .restitution = body.restitution};
+    const PhysicalAttributes attributes{.mass = body.mass, .friction = body.friction, .restitution = body.restitution};
     if (body.shape == browser::ShapeKind::circle) return core.add(Circle(body.center, body.radius, attributes));
     return core.add(Rectangle(body.center, body.width, body.height, attributes));
 }

@@ -23,6 +23,8 @@ namespace {
 // velocity F/G gave it (up to 150 px/s a component), into the borders and into each
 // other, and is pushed out again, step after step. Nothing answers their velocities
 // yet, so nothing bounces: a shape that reaches a border stays pressed against it.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_2",
     .title = "4.2 Positional Correction: relaxation pushes overlapping shapes apart",
@@ -52,6 +54,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, each moving shape's velocity and spin, and the positional correction",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -25,6 +25,8 @@ namespace {
 // 9 and sets it sliding, and 9 slides off the platform's end. 10 and 11 bounce off the
 // bottom and right borders, a little. At frame 180 H gives every shape a random kick.
 // Nothing turns: this project changes linear velocities only.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_3",
     .title = "4.3 Collision Impulse: shapes land, bounce and rest",
@@ -55,6 +57,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the positional correction, and the impulses",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

@@ -65,7 +65,7 @@ public:
 
     virtual void draw(browser::Canvas& context) const = 0;
 
-    Vec2 velocity() const { return velocity_; }                  // px/s
+    Vec2 velocity() const { return velocity_; }  // px/s
     void setVelocity(Vec2 velocity) { velocity_ = velocity; }
     double angularVelocity() const { return angular_velocity_; }  // rad/s
     void setAngularVelocity(double w) { angular_velocity_ = w; }

@@ -25,6 +25,8 @@ namespace {
 // Circle 9 lands on the steep platform and slides down it, spinning up, then rolls on
 // along the bottom; box 10 tips over as it lands and tumbles down the slope in one
 // long hop.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s4_4",
     .title = "4.4 Angular Impulse: shapes turn, roll and tumble",
@@ -54,6 +56,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

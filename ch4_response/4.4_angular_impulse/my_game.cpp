@@ -9,7 +9,7 @@ constexpr double kBorderThickness = 3.0;
 constexpr double kCursorSize = 3.0;
 constexpr PhysicalAttributes kStatic{.mass = 0.0};
 constexpr PhysicalAttributes kGrippyDeadPlatform{.mass = 0.0, .friction = 1.0, .restitution = 0.0};
-}
+}  // namespace
 
 void buildScene(Core& core) {
     const double width = core.width();
@@ -17,10 +17,10 @@ void buildScene(Core& core) {
     core.add(Rectangle({width / 2, height / 2}, kCursorSize, kCursorSize, kStatic));
     core.add(Rectangle({500, 200}, 400, 20, kStatic)).rotate(3.0);
     core.add(Rectangle({200, 400}, 400, 20, kGrippyDeadPlatform)).rotate(0.785);
-    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kStatic));       // top
-    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kStatic));  // bottom
-    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kStatic));     // left
-    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kStatic)); // right
+    core.add(Rectangle({width / 2, 0}, width, kBorderThickness, kStatic));        // top
+    core.add(Rectangle({width / 2, height}, width, kBorderThickness, kStatic));   // bottom
+    core.add(Rectangle({0, height / 2}, kBorderThickness, height, kStatic));      // left
+    core.add(Rectangle({width, height / 2}, kBorderThickness, height, kStatic));  // right
 }
 
 }  // namespace engine

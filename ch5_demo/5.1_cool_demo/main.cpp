@@ -19,6 +19,8 @@ namespace {
 // The book's demo runs by itself: movement is on from the start. Two seconds in, a box
 // and a ball are thrown from the long slide (the selected object 0); at five seconds H
 // kicks every shape into the air once more.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s5_1",
     .title = "5.1 Cool Demo: the whole engine at play",
@@ -49,6 +51,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

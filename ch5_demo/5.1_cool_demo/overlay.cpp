@@ -23,9 +23,9 @@ struct Sheet {
 
 // Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
 // never reads as the page's own.
-constexpr Color kStartColor{0, 150, 150, 255};  // teal: where the overlap starts
-constexpr Color kEndColor{160, 0, 200, 255};    // purple: where it ends
-constexpr Color kNormalColor{200, 0, 120, 255}; // crimson: the normal
+constexpr Color kStartColor{0, 150, 150, 255};   // teal: where the overlap starts
+constexpr Color kEndColor{160, 0, 200, 255};     // purple: where it ends
+constexpr Color kNormalColor{200, 0, 120, 255};  // crimson: the normal
 
 constexpr Color kVelocityColor{0, 140, 60, 255};  // dark green: velocity and spin
 

@@ -52,8 +52,6 @@ void RigidShape::updateMass(double delta) {
     updateInertia();
 }
 
-void RigidShape::updateInertia() {
-    inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass());
-}
+void RigidShape::updateInertia() { inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass()); }
 
 }  // namespace engine

@@ -13,12 +13,12 @@ constexpr double kSideMin = 10.0, kSideRange = 30.0;
 constexpr double kRadiusMin = 20.0, kRadiusRange = 10.0;
 // New shapes get a mass of 0 to 30, and friction and restitution of 0 to 1.
 constexpr double kSpawnMassRange = 30.0;
-constexpr double kMoveStep = 10.0;         // px per W/A/S/D press
-constexpr double kTurnStep = 0.1;          // rad per Q/E press
-constexpr double kSpeedStep = 1.0;         // px/s per I/J/K/L press
-constexpr double kSpinStep = 0.1;          // rad/s per U/O press
-constexpr double kMassStep = 1.0;          // per Z/X press
-constexpr double kSurfaceStep = 0.01;      // friction per C/V, restitution per B/N press
+constexpr double kMoveStep = 10.0;     // px per W/A/S/D press
+constexpr double kTurnStep = 0.1;      // rad per Q/E press
+constexpr double kSpeedStep = 1.0;     // px/s per I/J/K/L press
+constexpr double kSpinStep = 0.1;      // rad/s per U/O press
+constexpr double kMassStep = 1.0;      // per Z/X press
+constexpr double kSurfaceStep = 0.01;  // friction per C/V, restitution per B/N press
 }  // namespace
 
 void UserControl::onKeyDown(browser::Key key) {

@@ -19,6 +19,8 @@ namespace {
 // The book's demo, run with this stage's grid broad phase: the very pictures of 5.1,
 // bit for bit, found with a fraction of the pair tests. Two seconds in, a box and a
 // ball are thrown from the long slide; at five seconds H kicks every shape.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s5_2",
     .title = "5.2 Spatial Partitioning: the demo with a grid broad phase",
@@ -49,6 +51,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells, its candidate pairs, and the pair tests it saves",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

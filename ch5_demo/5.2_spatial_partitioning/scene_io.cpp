@@ -12,8 +12,7 @@ namespace engine {
 namespace {
 
 RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
-    const PhysicalAttributes attributes{
-        .mass = body.mass, .friction = body.friction, .restitution = body.restitution};
+    const PhysicalAttributes attributes{.mass = body.mass, .friction = body.friction, .restitution = body.restitution};
     if (body.shape == browser::ShapeKind::circle) return core.add(Circle(body.center, body.radius, attributes));
     return core.add(Rectangle(body.center, body.width, body.height, attributes));
 }
@@ -37,7 +36,8 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
         {"correction_rate", world.correction_rate, rules::kFraction},
         {"positional_correction", world.positional_correction},
         {"remove_out_of_bounds", world.remove_out_of_bounds},
-        {"broad_phase", world.broad_phase,
+        {"broad_phase",
+         world.broad_phase,
          {{"bounding_circle", BroadPhaseKind::bounding_circle},
           {"all_pairs", BroadPhaseKind::all_pairs},
           {"grid", BroadPhaseKind::grid}}},
@@ -81,8 +81,8 @@ void checkFinite(const Core& core) {
 browser::StepCost stepCost(const Core& core) {
     const WorldSettings& world = core.settings();
     // From 4.3 on a frame draws no collisions, only the shapes.
-    return {.dt_s = world.dt, .passes = world.relaxation_iterations, .shapes = core.objectCount(),
-            .draws_pairs = false};
+    return {
+        .dt_s = world.dt, .passes = world.relaxation_iterations, .shapes = core.objectCount(), .draws_pairs = false};
 }
 
 }  // namespace engine

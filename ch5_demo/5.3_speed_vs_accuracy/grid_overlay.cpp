@@ -12,9 +12,9 @@ using browser::Color;
 namespace draw = browser::overlay;
 
 // Colours none of the book's drawing uses, nor the overlays of the stages before.
-constexpr Color kCellColor{215, 215, 215, 255};      // light gray: the grid's cells
-constexpr Color kCoveredColor{120, 170, 220, 255};   // pale blue-gray: a cell a shape's box reaches
-constexpr Color kCandidateColor{200, 120, 0, 255};   // amber: a candidate pair on the list
+constexpr Color kCellColor{215, 215, 215, 255};     // light gray: the grid's cells
+constexpr Color kCoveredColor{120, 170, 220, 255};  // pale blue-gray: a cell a shape's box reaches
+constexpr Color kCandidateColor{200, 120, 0, 255};  // amber: a candidate pair on the list
 
 void strokeCell(browser::Canvas& canvas, double size, double column, double row, Color color) {
     canvas.save();
@@ -66,8 +66,8 @@ void drawGrid(browser::Canvas& canvas, const Core& core, std::vector<browser::Le
     legend.push_back({kCellColor, "grid cell, " + std::to_string(std::lround(size)) + " px"});
     legend.push_back({kCoveredColor, "cell a shape's widened box reaches"});
     legend.push_back({kCandidateColor, "candidate pair (oversize: not drawn)"});
-    legend.push_back({kCandidateColor, "pair tests a pass: " + std::to_string(listed) + " of " +
-                                           std::to_string(every_pair)});
+    legend.push_back(
+        {kCandidateColor, "pair tests a pass: " + std::to_string(listed) + " of " + std::to_string(every_pair)});
     legend.push_back({kCandidateColor, "saved a pass: " + std::to_string(every_pair - listed)});
 }
 

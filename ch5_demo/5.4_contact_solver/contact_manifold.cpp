@@ -110,8 +110,8 @@ ContactFeatures featuresOf(std::uint32_t key) {
 ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
     ContactManifold manifold{info.normal(), {}};
     if (a.type() == ShapeType::Rectangle && b.type() == ShapeType::Rectangle) {
-        manifold.points = clippedPoints(static_cast<const Rectangle&>(a), static_cast<const Rectangle&>(b),
-                                        info.normal());
+        manifold.points =
+            clippedPoints(static_cast<const Rectangle&>(a), static_cast<const Rectangle&>(b), info.normal());
     }
     // A pair with a circle; or rectangles where rounding left no point behind the face
     // (they overlap, so the book's one point stands in).

@@ -12,12 +12,12 @@ using browser::Color;
 namespace draw = browser::overlay;
 
 // Colours none of the book's drawing uses, nor the overlays of the stages before.
-constexpr Color kReferenceColor{70, 70, 70, 255};     // dark gray: the reference face
-constexpr Color kSideLineColor{175, 150, 210, 255};   // lavender: its side lines
-constexpr Color kIncidentColor{0, 170, 220, 255};     // sky blue: the incident face
-constexpr Color kPointColor{0, 0, 0, 255};            // black: a contact point
-constexpr Color kNormalColor{150, 80, 0, 255};        // brown: the normal push
-constexpr Color kFrictionColor{110, 130, 0, 255};     // olive: friction
+constexpr Color kReferenceColor{70, 70, 70, 255};    // dark gray: the reference face
+constexpr Color kSideLineColor{175, 150, 210, 255};  // lavender: its side lines
+constexpr Color kIncidentColor{0, 170, 220, 255};    // sky blue: the incident face
+constexpr Color kPointColor{0, 0, 0, 255};           // black: a contact point
+constexpr Color kNormalColor{150, 80, 0, 255};       // brown: the normal push
+constexpr Color kFrictionColor{110, 130, 0, 255};    // olive: friction
 
 // How far a side line reaches each way from the reference face's end.
 constexpr double kSideLineReach = 12.0;  // px

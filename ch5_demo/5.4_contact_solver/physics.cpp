@@ -160,7 +160,8 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
     responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
-    if (world.solver == SolverKind::sequential_impulse) return contact_solver_.step(shapes, broad_phase_, world, collisions_);
+    if (world.solver == SolverKind::sequential_impulse)
+        return contact_solver_.step(shapes, broad_phase_, world, collisions_);
     broad_phase_.startStep(shapes, world.relaxation_iterations);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
         // The record keeps what the last pass found.

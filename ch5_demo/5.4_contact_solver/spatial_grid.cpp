@@ -179,8 +179,8 @@ void SpatialGrid::gatherRow(std::size_t i, const BoundingCircles& circles) {
             }
         }
     }
-    for (auto later = std::upper_bound(oversize_list_.begin(), oversize_list_.end(), i);
-         later != oversize_list_.end(); ++later) {
+    for (auto later = std::upper_bound(oversize_list_.begin(), oversize_list_.end(), i); later != oversize_list_.end();
+         ++later) {
         if (boxesOverlap(i, *later, circles)) partners_.push_back(static_cast<std::uint32_t>(*later));
     }
     // The pass must meet the pairs in the order testing every pair would.

@@ -13,8 +13,7 @@ namespace {
 // An impulse of `amount` along `direction` at the point: b's motion changes by j / m
 // and (r x j) / I, and a's by the same turned round (Newton's third law). `motion`
 // picks the real or the pseudo one.
-void pushAlong(SolverBody& a, SolverBody& b, Motion SolverBody::*motion, Vec2 direction, Turns turns,
-               double amount) {
+void pushAlong(SolverBody& a, SolverBody& b, Motion SolverBody::*motion, Vec2 direction, Turns turns, double amount) {
     (a.*motion).linear -= direction * (amount * a.inv_mass);
     (a.*motion).angular -= turns.a * amount * a.inv_inertia;
     (b.*motion).linear += direction * (amount * b.inv_mass);
@@ -56,9 +55,7 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& isl
     prepare(shapes, world);
     if (world.warm_starting) warmStart();
     switch (world.position_method) {
-        case PositionMethod::baumgarte:
-            solveVelocities(world.velocity_iterations, true);
-            break;
+        case PositionMethod::baumgarte: solveVelocities(world.velocity_iterations, true); break;
         case PositionMethod::relax:
             solveVelocities(world.velocity_iterations, true);
             relaxAndMove(shapes, world);
@@ -240,7 +237,8 @@ void ContactSolver::solveVelocities(int iterations, bool with_removal) {
             }
             for (Point& point : contact.points) {
                 const double speed = speedAlong(a.velocity, b.velocity, contact.normal, point.normal_turns);
-                const double total = std::max(point.normal_impulse + point.normal_mass * (point.target_speed - speed), 0.0);
+                const double total =
+                    std::max(point.normal_impulse + point.normal_mass * (point.target_speed - speed), 0.0);
                 pushAlong(a, b, &SolverBody::velocity, contact.normal, point.normal_turns,
                           total - point.normal_impulse);
                 point.normal_impulse = total;
@@ -328,7 +326,8 @@ void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world)
             SolverBody& b = bodies_[contact.b];
             for (Point& point : contact.points) {
                 const double speed = speedAlong(a.pseudo, b.pseudo, contact.normal, point.normal_turns);
-                const double total = std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);
+                const double total =
+                    std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);
                 pushAlong(a, b, &SolverBody::pseudo, contact.normal, point.normal_turns, total - point.split_impulse);
                 point.split_impulse = total;
             }

@@ -86,9 +86,9 @@ public:
     // What the solver keeps about one contact point over a step.
     struct Point {
         ContactPoint contact;
-        Turns normal_turns;           // the arms (from each centre to the point) x normal
-        Turns tangent_turns;          // ... x tangent
-        double normal_mass = 0.0;     // 1 / (the normal speed one unit of impulse makes)
+        Turns normal_turns;        // the arms (from each centre to the point) x normal
+        Turns tangent_turns;       // ... x tangent
+        double normal_mass = 0.0;  // 1 / (the normal speed one unit of impulse makes)
         double tangent_mass = 0.0;
         double bounce_speed = 0.0;    // the normal speed restitution asks for
         double removal_speed = 0.0;   // the normal speed that removes the overlap
@@ -98,17 +98,17 @@ public:
         double split_impulse = 0.0;
     };
     struct Contact {
-        std::size_t a, b;  // places in the shape list
+        std::size_t a, b;           // places in the shape list
         const RigidShape* shape_a;  // who they are, to find the pair again next step
         const RigidShape* shape_b;
-        Vec2 normal;       // from a towards b
+        Vec2 normal;  // from a towards b
         Vec2 tangent;
         double friction, restitution;
         UpToTwo<Point> points;
         // Two points are solved together (solvePair) when the coupling of their normal
         // impulses, k12 below, leaves the 2 x 2 system well conditioned.
         bool solve_as_pair = false;
-        double k11 = 0.0, k12 = 0.0, k22 = 0.0;  // the speeds unit impulses at 1, 2 make at 1, 2
+        double k11 = 0.0, k12 = 0.0, k22 = 0.0;                    // the speeds unit impulses at 1, 2 make at 1, 2
         double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1, when solved as a pair
     };
     // The contacts the last step solved, with the totals it ended with (the overlay

@@ -28,7 +28,8 @@ double sleepSpeed(const RigidShape& shape, Vec2 start_center, double start_angle
 double driftSinceRest(const RigidShape& shape) {
     const SleepState& state = shape.sleep();
     if (state.rested_s == 0.0) return 0.0;
-    return shape.center().distance(state.rest_center) + std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
+    return shape.center().distance(state.rest_center) +
+           std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
 }
 
 // A steady creep at a tenth of the sleep speed, over the time to sleep: 0.15 px with

@@ -69,7 +69,7 @@ private:
     std::size_t root(std::size_t i);
     void wakeLabel(ShapeList shapes, std::uint64_t island);
 
-    std::vector<Vec2> step_start_center_;      // each shape as the step found it
+    std::vector<Vec2> step_start_center_;  // each shape as the step found it
     std::vector<double> step_start_angle_;
     std::vector<std::size_t> parent_;          // union-find over the step's contacts
     std::vector<double> deepest_;              // px, each shape's deepest overlap this step

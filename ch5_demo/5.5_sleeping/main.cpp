@@ -19,6 +19,8 @@ namespace {
 // The book's demo with every knob at its default, the book's engine: the pictures of
 // 5.1 and 5.2. A scene file turns the knobs (docs/scene_format.md). Two seconds in, a
 // box and a ball are thrown from the long slide; at five seconds H kicks every shape.
+// A table, an option or a key a line, which the layout would re-wrap:
+// clang-format off
 const browser::StageDefaults kStage{
     .id = "s5_5",
     .title = "5.5 Sleeping: the demo, resting shapes asleep",
@@ -50,6 +52,7 @@ const browser::StageDefaults kStage{
     },
     .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells and candidate pairs; on the sequential impulse solver its contacts: faces, points, impulses",
 };
+// clang-format on
 
 class Page final : public browser::PageScripts {
 public:

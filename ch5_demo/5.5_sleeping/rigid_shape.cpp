@@ -43,10 +43,10 @@ RigidShape::RigidShape(ShapeType type, Vec2 center, double bound_radius, Physica
     check(std::isfinite(center.y), shape + " center y", "a finite number", center.y);
     check(std::isfinite(attributes.mass) && attributes.mass >= 0.0, shape + " mass", "a finite number >= 0",
           attributes.mass);
-    check(std::isfinite(attributes.friction) && attributes.friction >= 0.0, shape + " friction",
-          "a finite number >= 0", attributes.friction);
-    check(attributes.restitution >= 0.0 && attributes.restitution <= 1.0, shape + " restitution",
-          "a number in [0, 1]", attributes.restitution);
+    check(std::isfinite(attributes.friction) && attributes.friction >= 0.0, shape + " friction", "a finite number >= 0",
+          attributes.friction);
+    check(attributes.restitution >= 0.0 && attributes.restitution <= 1.0, shape + " restitution", "a number in [0, 1]",
+          attributes.restitution);
 }
 
 bool RigidShape::boundTest(const RigidShape& other) const {
@@ -91,9 +91,7 @@ void RigidShape::updateMass(double delta) {
     updateInertia();
 }
 
-void RigidShape::updateInertia() {
-    inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass());
-}
+void RigidShape::updateInertia() { inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass()); }
 
 // Falling asleep stops the shape dead: the little speed it rested with would otherwise
 // carry it on when it wakes, after any time asleep.

@@ -44,9 +44,9 @@ enum class ShapeType { Rectangle, Circle };
 struct SleepState {
     bool asleep = false;
     double rested_s = 0.0;
-    double speed = 0.0;  // px/s, its sleep speed in the last step it was awake
-    bool held = false;  // it touched something in the last step
-    Vec2 rest_center;   // where it was, and how it was turned, when its rest began
+    double speed = 0.0;       // px/s, its sleep speed in the last step it was awake
+    bool held = false;        // it touched something in the last step
+    Vec2 rest_center;         // where it was, and how it was turned, when its rest began
     double rest_angle = 0.0;  // (or when the last window of its rest began)
     double noted_at_s = 0.0;  // s: the rest time at which they were noted
     std::uint64_t island = 0;
@@ -91,7 +91,7 @@ public:
 
     virtual void draw(browser::Canvas& context) const = 0;
 
-    Vec2 velocity() const { return velocity_; }                  // px/s
+    Vec2 velocity() const { return velocity_; }  // px/s
     void setVelocity(Vec2 velocity) { velocity_ = velocity; }
     double angularVelocity() const { return angular_velocity_; }  // rad/s
     void setAngularVelocity(double w) { angular_velocity_ = w; }

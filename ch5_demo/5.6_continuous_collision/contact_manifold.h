@@ -33,9 +33,9 @@
 namespace engine {
 
 struct ContactPoint {
-    Vec2 position;            // halfway between the two outlines
-    double depth = 0.0;       // > 0: how far the outlines overlap here, along the normal
-    std::uint32_t key = 0;    // the features that made the point (same key, same point)
+    Vec2 position;          // halfway between the two outlines
+    double depth = 0.0;     // > 0: how far the outlines overlap here, along the normal
+    std::uint32_t key = 0;  // the features that made the point (same key, same point)
 };
 
 // At most two of something, kept in place: a step makes one manifold per touching

@@ -96,8 +96,7 @@ Outline outlineOf(const RigidShape& shape) {
     if (shape.type() == ShapeType::Circle) {
         return {.center = shape.center(), .radius = static_cast<const Circle&>(shape).radius()};
     }
-    return {.center = shape.center(), .is_point = false,
-            .corners = static_cast<const Rectangle&>(shape).vertices()};
+    return {.center = shape.center(), .is_point = false, .corners = static_cast<const Rectangle&>(shape).vertices()};
 }
 
 Outline moved(const Outline& outline, Vec2 offset, double turn) {

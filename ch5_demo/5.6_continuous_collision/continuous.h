@@ -48,8 +48,8 @@ inline constexpr int kMaxAdvances = 50;
 // its centre, a rectangle's the quadrilateral of its four corners, with no radius.
 struct Outline {
     Vec2 center;
-    bool is_point = true;          // a circle
-    std::array<Vec2, 4> corners;   // a rectangle's, in order round it
+    bool is_point = true;         // a circle
+    std::array<Vec2, 4> corners;  // a rectangle's, in order round it
     double radius = 0.0;
 };
 
@@ -86,8 +86,8 @@ std::optional<double> timeOfImpact(const StepMotion& motion, const Outline& obst
 // What the sweep did to one fast shape in the last step (the overlay draws it).
 struct Sweep {
     std::size_t index;
-    Vec2 from;  // its centre where the step began
-    Vec2 to;    // and where its motion would have taken it
+    Vec2 from;                     // its centre where the step began
+    Vec2 to;                       // and where its motion would have taken it
     std::optional<double> impact;  // the share of the motion it was moved back to
 };
 

@@ -162,7 +162,10 @@ void Core::updateUIEcho() {
     echo.append("  Positional Correction: ").append(echoFlag(settings_.positional_correction)).append("\n");
     echo.append("  Movement: ").append(echoFlag(settings_.movement)).append("\n");
     echo.append("  Sleeping: ").append(echoFlag(settings_.sleep)).append(", awake ");
-    echo.append(std::to_string(awakeCount())).append("/").append(std::to_string(movingCount(all_objects_))).append("\n");
+    echo.append(std::to_string(awakeCount()))
+        .append("/")
+        .append(std::to_string(movingCount(all_objects_)))
+        .append("\n");
     echo.append("  Continuous: ").append(echoFlag(settings_.continuous)).append("\n");
     echo +=
         "Control: of selected object\n"

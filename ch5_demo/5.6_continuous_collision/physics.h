@@ -50,14 +50,14 @@ namespace engine {
 // What one step's relaxation passes did to a pair, added up over the passes. The engine
 // needs none of it; the overlay shows it (overlay.h).
 struct PairResponse {
-    Vec2 moved_first;   // how far positional correction moved the first shape
-    Vec2 moved_second;  // and the second: the other way, in proportion to the inverse masses
+    Vec2 moved_first;      // how far positional correction moved the first shape
+    Vec2 moved_second;     // and the second: the other way, in proportion to the inverse masses
     Vec2 normal_impulse;   // jN n: the second shape got it, the first the same turned round
     Vec2 tangent_impulse;  // jT t, friction's, given the same way
     Vec2 contact;          // where the impulses act (the last pass's contact point)
     Vec2 arm_first;        // the lever arms to it from the centres, in the last pass
     Vec2 arm_second;
-    double spin_first = 0.0;   // how much the impulses changed each angular velocity, rad/s
+    double spin_first = 0.0;  // how much the impulses changed each angular velocity, rad/s
     double spin_second = 0.0;
 };
 

@@ -12,8 +12,7 @@ namespace engine {
 namespace {
 
 RigidShape& addBody(Core& core, const browser::BodyDescription& body) {
-    const PhysicalAttributes attributes{
-        .mass = body.mass, .friction = body.friction, .restitution = body.restitution};
+    const PhysicalAttributes attributes{.mass = body.mass, .friction = body.friction, .restitution = body.restitution};
     if (body.shape == browser::ShapeKind::circle) return core.add(Circle(body.center, body.radius, attributes));
     return core.add(Rectangle(body.center, body.width, body.height, attributes));
 }
@@ -51,25 +50,27 @@ std::vector<browser::WorldKey> worldKeys(WorldSettings& world) {
         {"correction_rate", world.correction_rate, rules::kFraction},
         {"positional_correction", world.positional_correction},
         {"remove_out_of_bounds", world.remove_out_of_bounds},
-        {"broad_phase", world.broad_phase,
+        {"broad_phase",
+         world.broad_phase,
          {{"bounding_circle", BroadPhaseKind::bounding_circle},
           {"all_pairs", BroadPhaseKind::all_pairs},
           {"grid", BroadPhaseKind::grid}}},
         {"substeps", world.substeps, kRepeats},
-        {"integrator", world.integrator,
+        {"integrator",
+         world.integrator,
          {{"symplectic", Integrator::symplectic}, {"explicit", Integrator::explicit_euler}}},
-        {"friction_model", world.friction_model,
-         {{"book", FrictionModel::book}, {"coulomb", FrictionModel::coulomb}}},
+        {"friction_model", world.friction_model, {{"book", FrictionModel::book}, {"coulomb", FrictionModel::coulomb}}},
         {"rotation", world.rotation},
         {"friction", world.friction},
-        {"solver", world.solver,
-         {{"book", SolverKind::book}, {"sequential_impulse", SolverKind::sequential_impulse}}},
+        {"solver", world.solver, {{"book", SolverKind::book}, {"sequential_impulse", SolverKind::sequential_impulse}}},
         {"velocity_iterations", world.velocity_iterations, kRepeats},
         {"position_iterations", world.position_iterations, rules::kPassCount},
         {"warm_starting", world.warm_starting},
         {"restitution_threshold", world.restitution_threshold, kSpeedRule},
-        {"position_method", world.position_method,
-         {{"split_impulse", PositionMethod::split_impulse}, {"baumgarte", PositionMethod::baumgarte},
+        {"position_method",
+         world.position_method,
+         {{"split_impulse", PositionMethod::split_impulse},
+          {"baumgarte", PositionMethod::baumgarte},
           {"relax", PositionMethod::relax}}},
         {"position_rate", world.position_rate, rules::kFraction},
         {"slop", world.slop, kSlopRule},
@@ -121,16 +122,19 @@ browser::StepCost stepCost(const Core& core) {
     // every contact once a velocity iteration and once a position iteration; at worst
     // every pair is a contact, so a pass over the contacts counts as a pass over the
     // pairs.
-    const int passes = world.solver == SolverKind::book
-                           ? world.relaxation_iterations
-                           : 1 + world.velocity_iterations + world.position_iterations;
+    const int passes = world.solver == SolverKind::book ? world.relaxation_iterations
+                                                        : 1 + world.velocity_iterations + world.position_iterations;
     // The sequential impulse solver keeps a contact for every touching pair, this step's
     // and last step's (for warm starting): 1,250 bytes a pair measured with 500 circles
     // on one point. The book's passes keep only the collisions they draw.
     const double bytes_a_contact = world.solver == SolverKind::book ? browser::StepCost{}.bytes_a_contact : 1300.0;
     // From 4.3 on a frame draws no collisions, only the shapes.
-    return {.dt_s = world.dt, .substeps = world.substeps, .passes = passes, .shapes = core.objectCount(),
-            .draws_pairs = false, .bytes_a_contact = bytes_a_contact};
+    return {.dt_s = world.dt,
+            .substeps = world.substeps,
+            .passes = passes,
+            .shapes = core.objectCount(),
+            .draws_pairs = false,
+            .bytes_a_contact = bytes_a_contact};
 }
 
 }  // namespace engine

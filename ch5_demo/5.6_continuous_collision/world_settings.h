@@ -62,7 +62,7 @@ inline constexpr double kSlop = 0.15;                  // px of overlap left alo
 // speed stays under 3 px/s, and its island falls asleep when all of it has rested for
 // half a second. Under the demo's gravity a shape at the top of its arc is that slow
 // for 2 * 3 / 20 = 0.3 s only.
-inline constexpr double kSleepSpeed = 3.0;  // px/s
+inline constexpr double kSleepSpeed = 3.0;   // px/s
 inline constexpr double kTimeToSleep = 0.5;  // s
 
 struct WorldSettings {
@@ -102,7 +102,7 @@ struct WorldSettings {
     // This stage's sleeping, on unless a scene turns it off; with it off every scene runs
     // as in 5.4, bit for bit. The slop above is also the overlap the sleep rule forgives.
     bool sleep = true;
-    double sleep_speed = kSleepSpeed;      // px/s
+    double sleep_speed = kSleepSpeed;     // px/s
     double time_to_sleep = kTimeToSleep;  // s
     // This stage's continuous collision (continuous.h): a shape that moves far in a step
     // against its own size is swept to where it first touches, so it cannot pass

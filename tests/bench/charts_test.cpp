@@ -117,11 +117,8 @@ TEST_CASE("fitted_exponent: recovers the exponent of a power law") {
         // On y = 3 x^1.5 from x = 2 to 8, with two far-off points outside: taken in, they
         // would pull the slope far from 1.5. Were the ends left out, only x = 4 would
         // remain and there would be no slope at all.
-        const std::vector<ChartPoint> points{{1, 100, ""},
-                                             {2, 3 * std::pow(2.0, 1.5), ""},
-                                             {4, 24, ""},
-                                             {8, 3 * std::pow(8.0, 1.5), ""},
-                                             {16, 0.1, ""}};
+        const std::vector<ChartPoint> points{
+            {1, 100, ""}, {2, 3 * std::pow(2.0, 1.5), ""}, {4, 24, ""}, {8, 3 * std::pow(8.0, 1.5), ""}, {16, 0.1, ""}};
         CHECK_THAT(bench::fitted_exponent(points, 2, 8), test::near(1.5, 1e-12));
     }
     SECTION("scattered points: the least-squares slope") {
@@ -161,7 +158,7 @@ TEST_CASE("write_chart: points it cannot place are skipped and counted in a note
         Chart messy = sample_chart();
         messy.series[0].points.push_back({nan, 1.0, "lost"});
         messy.series[0].points.push_back({50, inf, ""});
-        messy.series[1].points.push_back({-5, 0.1, ""});  // log x
+        messy.series[1].points.push_back({-5, 0.1, ""});   // log x
         messy.series[1].points.push_back({200, 0.0, ""});  // log y
         Chart clean = sample_chart();
         clean.notes = {"4 points off the scale"};

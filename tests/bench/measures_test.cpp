@@ -19,8 +19,12 @@ BodyState disc(Vec2 center, double radius, bool fixed = false) {
 }
 
 browser::BodyDescription body_box(Vec2 center, double width, double height, double mass, double angle = 0.0) {
-    return {.shape = browser::ShapeKind::rectangle, .center = center, .width = width, .height = height,
-            .mass = mass, .angle = angle};
+    return {.shape = browser::ShapeKind::rectangle,
+            .center = center,
+            .width = width,
+            .height = height,
+            .mass = mass,
+            .angle = angle};
 }
 
 }  // namespace

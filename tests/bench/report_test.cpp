@@ -66,7 +66,7 @@ TEST_CASE("results_csv: the header, then one line per row with every column") {
     CHECK(first[column("relaxation_iterations")] == "8");
     CHECK(first[column("substeps")].empty());  // not a key of 5.1's
     CHECK(first[column("cost_us")] == "250");
-    CHECK(first[column("steps_per_s")] == "4000");  // 1e6 / 250
+    CHECK(first[column("steps_per_s")] == "4000");       // 1e6 / 250
     CHECK(first[column("ms_per_simulated_s")] == "15");  // 250 us x 60 steps
     CHECK(first[column("top_drift")] == "0.5");
     CHECK(first[column("energy_change")].empty());  // not measured here
@@ -104,19 +104,22 @@ TEST_CASE("MarkdownTable: a header line, a rule, a line per row") {
 }
 
 TEST_CASE("a study's rows: one CSV line per setting, the scene's own on each stage first") {
-    // The quick slide: its own world on 5.1, 5.2 and 5.3 (5.4 runs it as 5.3, bit for
-    // bit, and has no row for it), then one other value of each knob it varies, on the
+    // The quick slide: its own world on 5.1, 5.2, 5.3, 5.5 and 5.6 (5.4 runs it as 5.3,
+    // bit for bit, and has no row for it; 5.5 and 5.6 sleep and sweep fast shapes unless
+    // told not to), then one other value of each knob it varies, on the
     // oldest stage that has it: passes and dt on 5.1; friction model, sub-steps,
     // integrator and rotation on 5.3; the sequential impulse solver on 5.4.
     const bench::StudyContext context{.quick = true, .repeats = 1, .scenes_dir = BENCH_SCENES_DIR};
     const bench::StudyResult result = bench::slide_study(context);
     const std::vector<std::string> lines = lines_of(bench::results_csv(result.rows));
-    REQUIRE(lines.size() == 1 + 3 + 7);
+    REQUIRE(lines.size() == 1 + 5 + 7);
     CHECK_THAT(lines.back(), Catch::StartsWith("slide,slide,5.4,sequential impulse,solver,2,"));
     CHECK(lines[0] == bench::csv_header());
     CHECK_THAT(lines[1], Catch::StartsWith("slide,slide,5.1,scene,,2,"));
     CHECK_THAT(lines[2], Catch::StartsWith("slide,slide,5.2,scene,,2,"));
     CHECK_THAT(lines[3], Catch::StartsWith("slide,slide,5.3,scene,,2,"));
+    CHECK_THAT(lines[4], Catch::StartsWith("slide,slide,5.5,scene,,2,"));
+    CHECK_THAT(lines[5], Catch::StartsWith("slide,slide,5.6,scene,,2,"));
     for (const bench::Row& row : result.rows) CHECK(row.metrics.slide_error);
     REQUIRE(result.figures.size() == 1);
     CHECK(result.figures[0].file == "cost_vs_error_slide.png");

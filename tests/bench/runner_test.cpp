@@ -1,8 +1,12 @@
 // Rows from runs: the steps and repeats they took, the pairs per step they counted.
 #include <catch2/catch.hpp>
 
+#include <chrono>
+#include <thread>
+
 #include "runner.h"
 #include "scene_maker.h"
+#include "thread_clock.h"
 
 namespace {
 
@@ -29,9 +33,9 @@ TEST_CASE("stage_row: the setting's stage and world, the steps of a run, one run
     bench::WorldDescription world = scene.world;
     world.relaxation_iterations = 4;
     int calls = 0;
-    const bench::Row row = bench::stage_row({"pairs", "pair", scene},
-                                            {bench::Stage::s5_2, "relaxation_iterations", "passes 4", world}, 3,
-                                            run_steps(50, &calls));
+    const bench::Row row =
+        bench::stage_row({"pairs", "pair", scene}, {bench::Stage::s5_2, "relaxation_iterations", "passes 4", world}, 3,
+                         run_steps(50, &calls));
     CHECK(calls == 3);
     CHECK(row.repeats == 3);
     CHECK(row.steps == 50);
@@ -104,4 +108,15 @@ TEST_CASE("box2d_row: Box2D's row where this build has Box2D") {
     CHECK_FALSE(row);
     CHECK(calls == 0);
 #endif
+}
+
+TEST_CASE("thread_cpu_seconds: a thread that waits uses no processor time") {
+    // The bench's clock leaves out the time a run waits: a thread asleep for 200 ms,
+    // as a run waits for a core, has used a few microseconds of processor time, not
+    // 200 ms. The wall clock would show the whole wait.
+    const double before = bench::thread_cpu_seconds();
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    const double waited = bench::thread_cpu_seconds() - before;
+    CHECK(waited >= 0.0);
+    CHECK(waited < 0.05);
 }

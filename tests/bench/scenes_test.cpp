@@ -17,9 +17,7 @@ namespace {
 using bench::SceneDescription;
 using bench::Stage;
 
-bool same(const SceneDescription& a, const SceneDescription& b) {
-    return a.world == b.world && a.bodies == b.bodies;
-}
+bool same(const SceneDescription& a, const SceneDescription& b) { return a.world == b.world && a.bodies == b.bodies; }
 
 std::size_t moving(const SceneDescription& scene) {
     std::size_t count = 0;

@@ -1,4 +1,4 @@
-// The three chapter 5 stages in one program: each is its own engine, reads the keys its
+// The chapter 5 stages in one program: each is its own engine, reads the keys its
 // scene files may hold and refuses the others, and moves a scene as the others do where
 // the book's engine is all it uses.
 #include <catch2/catch.hpp>
@@ -33,6 +33,7 @@ TEST_CASE("stages: each row's stage by name") {
     CHECK(bench::stage_name(Stage::s5_1) == "5.1");
     CHECK(bench::stage_name(Stage::s5_2) == "5.2");
     CHECK(bench::stage_name(Stage::s5_3) == "5.3");
+    CHECK(bench::stage_name(Stage::s5_6) == "5.6");
     CHECK_THROWS_AS(bench::stage_engine(Stage::box2d), std::invalid_argument);
 }
 
@@ -61,6 +62,12 @@ TEST_CASE("stages: what each stage can express is what its scene files may say")
     CHECK(bench::oldest_expressing(all, grid) == Stage::s5_2);
     CHECK(bench::oldest_expressing(all, coulomb) == Stage::s5_3);
     CHECK_FALSE(bench::oldest_expressing({Stage::s5_1, Stage::s5_2}, coulomb));
+    const WorldDescription awake = with([](WorldDescription& w) { w.sleep = false; });
+    const WorldDescription swept = with([](WorldDescription& w) { w.continuous = true; });
+    CHECK_FALSE(bench::can_express(Stage::s5_4, awake));
+    CHECK(bench::oldest_expressing(all, awake) == Stage::s5_5);
+    CHECK_FALSE(bench::can_express(Stage::s5_5, swept));
+    CHECK(bench::oldest_expressing(all, swept) == Stage::s5_6);
 }
 
 TEST_CASE("stages: a stage refuses a key it does not read, as its program does") {
@@ -86,6 +93,13 @@ TEST_CASE("stages: resolved writes out each stage's own defaults, and only its k
     CHECK(s5_3.rotation == true);
     CHECK(s5_3.friction == true);
     CHECK(bench::stage_engine(Stage::s5_3)->same_settings(book, s5_3));
+    // Sleeping and continuous collision are on unless a scene turns them off.
+    const WorldDescription s5_5 = bench::resolved(Stage::s5_5, book);
+    CHECK(s5_5.sleep == true);
+    CHECK_FALSE(s5_5.continuous);
+    const WorldDescription s5_6 = bench::resolved(Stage::s5_6, book);
+    CHECK(s5_6.sleep == true);
+    CHECK(s5_6.continuous == true);
 }
 
 TEST_CASE("stages: the three engines move a rain alike, each in its own namespace") {
@@ -102,4 +116,21 @@ TEST_CASE("stages: the three engines move a rain alike, each in its own namespac
     CHECK(same_positions(after[0], after[1]));
     CHECK(same_positions(after[0], after[2]));
     CHECK_FALSE(same_positions(after[0], bench::stage_world(Stage::s5_1, rain)->snapshot()));  // it did move
+}
+
+TEST_CASE("stages: with sleep and continuous collision off, 5.5 and 5.6 move a rain as the book does") {
+    // Off, each runs a scene as the stage before it (their identity tests), and 5.4's
+    // solver is the book's unless a scene says otherwise.
+    bench::SceneDescription rain = bench::scenes::rain(100);
+    constexpr long kSteps = 60;
+    const auto book = bench::stage_world(Stage::s5_1, rain);
+    book->run(kSteps);
+    rain.world.sleep = false;
+    const auto s5_5 = bench::stage_world(Stage::s5_5, rain);
+    s5_5->run(kSteps);
+    rain.world.continuous = false;
+    const auto s5_6 = bench::stage_world(Stage::s5_6, rain);
+    s5_6->run(kSteps);
+    CHECK(same_positions(book->snapshot(), s5_5->snapshot()));
+    CHECK(same_positions(book->snapshot(), s5_6->snapshot()));
 }

@@ -30,9 +30,9 @@ TEST_CASE("one_at_a_time: the scene on each stage, then each knob's values on th
         bench::one_at_a_time(base, kAll, {{bench::Knob::substeps}, {bench::Knob::relaxation_iterations}}, false);
     // Sub-steps 1 is 5.3's own default: the scene already runs it. The knobs come stage
     // by stage, whatever order the sweeps were listed in.
-    CHECK(labels(settings) == std::vector<std::string>{"scene", "scene", "scene", "passes 1", "passes 2",
-                                                       "passes 4", "passes 8", "passes 30", "substeps 2",
-                                                       "substeps 4", "substeps 8"});
+    CHECK(labels(settings) == std::vector<std::string>{"scene", "scene", "scene", "passes 1", "passes 2", "passes 4",
+                                                       "passes 8", "passes 30", "substeps 2", "substeps 4",
+                                                       "substeps 8"});
     CHECK(stages(settings) == std::vector<Stage>{Stage::s5_1, Stage::s5_2, Stage::s5_3, Stage::s5_1, Stage::s5_1,
                                                  Stage::s5_1, Stage::s5_1, Stage::s5_1, Stage::s5_3, Stage::s5_3,
                                                  Stage::s5_3});
@@ -51,8 +51,7 @@ TEST_CASE("one_at_a_time: dt, broad phases, switches, without the book's stage")
         {{bench::Knob::dt}, {bench::Knob::broad_phase}, {bench::Knob::rotation}, {bench::Knob::friction}}, false);
     // The grid is 5.2's own default; dt falls to 5.2, the oldest stage here.
     CHECK(labels(settings) == std::vector<std::string>{"scene", "scene", "dt 1/30", "dt 1/120", "dt 1/240",
-                                                       "bounding_circle", "all_pairs", "rotation off",
-                                                       "friction off"});
+                                                       "bounding_circle", "all_pairs", "rotation off", "friction off"});
     CHECK(stages(settings) == std::vector<Stage>{Stage::s5_2, Stage::s5_3, Stage::s5_2, Stage::s5_2, Stage::s5_2,
                                                  Stage::s5_2, Stage::s5_2, Stage::s5_3, Stage::s5_3});
     CHECK(settings[4].world.dt == 1.0 / 240);
@@ -62,8 +61,8 @@ TEST_CASE("one_at_a_time: dt, broad phases, switches, without the book's stage")
 
 TEST_CASE("one_at_a_time: a quick run keeps one other value of each knob, and so does Range::one") {
     const bench::WorldDescription base = bench::book_world();
-    const auto quick = bench::one_at_a_time(
-        base, kAll, {{bench::Knob::relaxation_iterations}, {bench::Knob::friction_model}}, true);
+    const auto quick =
+        bench::one_at_a_time(base, kAll, {{bench::Knob::relaxation_iterations}, {bench::Knob::friction_model}}, true);
     CHECK(labels(quick) == std::vector<std::string>{"scene", "scene", "scene", "passes 1", "friction coulomb"});
     const auto light = bench::one_at_a_time(
         base, kAll, {{bench::Knob::substeps, bench::Range::one}, {bench::Knob::dt, bench::Range::one}}, false);

@@ -15,8 +15,8 @@ namespace {
 // inside finds its centre past the middle, and the correction pushes it on, out of the
 // far side. So the slowest speed that gets through is 8 px per sub-step: 8 k / dt.
 double by_hand(double dt, int substeps) {
-    const double per_look = bench::scenes::kWallGap + bench::scenes::kWallBallRadius +
-                            bench::scenes::kWallThickness / 2;
+    const double per_look =
+        bench::scenes::kWallGap + bench::scenes::kWallBallRadius + bench::scenes::kWallThickness / 2;
     return per_look * substeps / dt;
 }
 
@@ -41,7 +41,8 @@ TEST_CASE("ball_passes: a slow ball bounces off the wall, a fast one gets throug
 }
 
 TEST_CASE("slowest_passing_speed: 8 px per sub-step, for every dt and number of sub-steps") {
-    for (const auto& [dt, substeps] : std::vector<std::pair<double, int>>{{1.0 / 60, 1}, {1.0 / 30, 1}, {1.0 / 60, 4}}) {
+    for (const auto& [dt, substeps] :
+         std::vector<std::pair<double, int>>{{1.0 / 60, 1}, {1.0 / 30, 1}, {1.0 / 60, 4}}) {
         INFO("dt " << dt << ", substeps " << substeps);
         const double found = bench::slowest_passing_speed(kSubsteps, wall(dt, substeps), 1e-4);
         // The search returns a speed that passes, at most 0.01% above the threshold.
@@ -60,7 +61,7 @@ TEST_CASE("slowest_passing_speed: the book's 5.1 looks once per step, as 5.3 doe
 TEST_CASE("tunnelling_study: one row per dt and sub-steps, each with its speed") {
     const bench::StudyContext context{.quick = true, .repeats = 1, .scenes_dir = BENCH_SCENES_DIR};
     const bench::StudyResult result = bench::tunnelling_study(context);
-    REQUIRE(result.rows.size() == 2);  // quick: dt 1/60 with 1 and 2 sub-steps
+    REQUIRE(result.rows.size() == 2);                   // quick: dt 1/60 with 1 and 2 sub-steps
     CHECK(result.rows[0].stage == bench::Stage::s5_1);  // one look per step: the book's
     CHECK(result.rows[1].stage == bench::Stage::s5_3);  // sub-steps: 5.3's
     for (const bench::Row& row : result.rows) {

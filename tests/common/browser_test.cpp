@@ -26,7 +26,6 @@ namespace {
 
 using test::ScratchFolder;
 
-
 // The names in `folder`, sorted.
 std::vector<std::string> names_in(const fs::path& folder) {
     std::vector<std::string> names;
@@ -113,9 +112,7 @@ Result run(const browser::Options& options) {
     return result;
 }
 
-bool is_one_line(const std::string& text) {
-    return !text.empty() && text.find('\n') == text.size() - 1;
-}
+bool is_one_line(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
 
 }  // namespace
 
@@ -171,8 +168,8 @@ TEST_CASE("browser: final.png and every K-th frame are written") {
     SECTION("frame numbers past 9999 grow beyond four digits") {
         const Result result = run(options_for(out, 10001, 10000));
         REQUIRE(result.status == 0);
-        CHECK(names_in(out) ==
-              std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png", "frame_10000.png"});
+        CHECK(names_in(out) == std::vector<std::string>{".manifest", "contact_sheet.png", "final.png", "frame_0000.png",
+                                                        "frame_10000.png"});
     }
 }
 
@@ -307,12 +304,12 @@ TEST_CASE("browser: staging folders of runs that are gone are removed; a living 
     const std::string gone = "4194305";
     fs::create_directories(temp.path / ("out.partial-" + gone));
     fs::create_directories(temp.path / ("out.old-" + gone));
-    fs::create_directories(temp.path / "out.partial-1");         // init's: alive
+    fs::create_directories(temp.path / "out.partial-1");                // init's: alive
     fs::create_directories(temp.path / ("out.partial-" + gone + "x"));  // not a process id: not ours
-    std::ofstream(temp.path / ("final.png.partial-" + gone)) << "x";  // another target's: not this one's
+    std::ofstream(temp.path / ("final.png.partial-" + gone)) << "x";    // another target's: not this one's
     REQUIRE(run(options_for(out, 1, 0)).status == 0);
-    CHECK(names_in(temp.path) == std::vector<std::string>{"final.png.partial-" + gone, "out", "out.partial-1",
-                                                          "out.partial-" + gone + "x"});
+    CHECK(names_in(temp.path) ==
+          std::vector<std::string>{"final.png.partial-" + gone, "out", "out.partial-1", "out.partial-" + gone + "x"});
 }
 
 namespace {
@@ -336,7 +333,8 @@ TEST_CASE("browser: the pair-test bound counts steps, sub-steps, passes and the 
     options.frame_ms = 1000.0 / 60.0;
     // 10 frames of one 1/60 s step each, plus the one the clock's rounding may add: 11
     // steps; 7 + 3 shapes: 45 pairs, 15 passes each, and 10 moves.
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7, .draws_pairs = false}, options) == 11.0 * (15 * 45 + 10));
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7, .draws_pairs = false}, options) ==
+          11.0 * (15 * 45 + 10));
     // Sub-steps multiply it all; dt = 1/600 s runs ten steps a frame.
     CHECK(browser::pair_test_bound({.dt_s = 1.0 / 600.0, .substeps = 4, .passes = 0, .shapes = 7, .draws_pairs = false},
                                    options) == 101.0 * 4 * (45 + 10));
@@ -352,7 +350,12 @@ TEST_CASE("browser: the pair-test bound counts steps, sub-steps, passes and the 
 TEST_CASE("browser: a run over its budget is refused with status 2 before anything is written") {
     ScratchFolder temp("browser_test");
     const fs::path out = temp.path / "out";
-    struct Case { std::size_t shapes; int frames; int width, height, scale; const char* says; };
+    struct Case {
+        std::size_t shapes;
+        int frames;
+        int width, height, scale;
+        const char* says;
+    };
     const Case cases[] = {
         // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests.
         {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests"},
@@ -380,7 +383,8 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
     // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests (never run here).
     browser::Options inside = options_for(out, 100, 0);
     inside.frame_ms = 1000.0 / 60.0;
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <= browser::kMaxPairTests);
+    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <=
+          browser::kMaxPairTests);
 }
 
 TEST_CASE("browser: the contact memory bound is every pair of the most shapes in contact") {
@@ -406,8 +410,8 @@ TEST_CASE("browser: the encoding bound counts each saved page, its place on the 
 }
 
 TEST_CASE("browser: the names of a run's own files") {
-    for (const char* name : {"final.png", "contact_sheet.png", "animation.gif", "animation.gif.partial", "frame_0000.png",
-                             "frame_10000.png"}) {
+    for (const char* name : {"final.png", "contact_sheet.png", "animation.gif", "animation.gif.partial",
+                             "frame_0000.png", "frame_10000.png"}) {
         CHECK(browser::is_picture_name(name));
     }
     for (const char* name : {"frame_.png", "frame_00a0.png", "final.png.tmp", "dump.csv", ".manifest", "Final.png"}) {

@@ -148,8 +148,9 @@ TEST_CASE("canvas: a rotated rectangle outline lights its four edges, not its in
             double nearest_edge = std::numeric_limits<double>::infinity();
             for (int edge = 0; edge < 4; ++edge) {
                 const int next = (edge + 1) % 4;
-                nearest_edge = std::min(nearest_edge, distance_to_segment(i + 0.5, j + 0.5, corner_x[edge], corner_y[edge],
-                                                                          corner_x[next], corner_y[next]));
+                nearest_edge =
+                    std::min(nearest_edge, distance_to_segment(i + 0.5, j + 0.5, corner_x[edge], corner_y[edge],
+                                                               corner_x[next], corner_y[next]));
             }
             if (nearest_edge > kReach && grey(canvas, i, j) != kWhite) ++wrong;  // inside and outside
         }
@@ -186,12 +187,12 @@ TEST_CASE("canvas: closePath joins back to the start, and drawing goes on from t
     canvas.moveTo(20.5, 20.5);
     canvas.lineTo(100.5, 20.5);
     canvas.lineTo(100.5, 60.5);
-    canvas.closePath();          // the slanted side back to (20.5, 20.5)
-    canvas.lineTo(20.5, 80.5);   // starts at (20.5, 20.5), not at (100.5, 60.5)
+    canvas.closePath();         // the slanted side back to (20.5, 20.5)
+    canvas.lineTo(20.5, 80.5);  // starts at (20.5, 20.5), not at (100.5, 60.5)
     canvas.stroke();
-    CHECK(grey(canvas, 60, 40) == 0);         // the middle of the closing side
-    CHECK(grey(canvas, 20, 50) == 0);         // on the line from the start downwards
-    CHECK(grey(canvas, 60, 70) == kWhite);    // a line from (100.5, 60.5) would pass here
+    CHECK(grey(canvas, 60, 40) == 0);       // the middle of the closing side
+    CHECK(grey(canvas, 20, 50) == 0);       // on the line from the start downwards
+    CHECK(grey(canvas, 60, 70) == kWhite);  // a line from (100.5, 60.5) would pass here
 }
 
 TEST_CASE("canvas: strokeRect leaves the current path alone") {
@@ -200,10 +201,10 @@ TEST_CASE("canvas: strokeRect leaves the current path alone") {
     canvas.moveTo(10.5, 100.5);
     canvas.lineTo(300.5, 100.5);
     canvas.strokeRect(50.5, 20.5, 30, 30);
-    CHECK(grey(canvas, 60, 20) == 0);       // the rectangle's top edge
+    CHECK(grey(canvas, 60, 20) == 0);         // the rectangle's top edge
     CHECK(grey(canvas, 200, 100) == kWhite);  // the path is not stroked yet...
     canvas.stroke();
-    CHECK(grey(canvas, 200, 100) == 0);     // ...and still there afterwards
+    CHECK(grey(canvas, 200, 100) == 0);  // ...and still there afterwards
 }
 
 TEST_CASE("canvas: a translate after a rotate moves along the turned axes") {
@@ -213,8 +214,8 @@ TEST_CASE("canvas: a translate after a rotate moves along the turned axes") {
     canvas.rotate(kPi / 2);
     canvas.translate(20.5, -150.5);
     canvas.beginPath();
-    canvas.moveTo(0, 0);    // -> (150.5, 20.5)
-    canvas.lineTo(40, 0);   // -> (150.5, 60.5)
+    canvas.moveTo(0, 0);   // -> (150.5, 20.5)
+    canvas.lineTo(40, 0);  // -> (150.5, 60.5)
     canvas.stroke();
     CHECK(grey(canvas, 150, 40) == 0);
     CHECK_THAT(ink(canvas), test::near(41.0, 1.5));  // anti-aliased ends: up to a pixel and a half
@@ -459,7 +460,7 @@ TEST_CASE("page: the canvas framed on the left, the echo text in a panel on the 
     REQUIRE(page.height == 120);
     CHECK(page.at(100, 60) == browser::colors::kBlack);  // the canvas's pixels
     CHECK(page.at(100, 30) == browser::colors::kWhite);
-    CHECK(page.at(0, 0) == browser::colors::kGray);      // the frame on its edge pixels
+    CHECK(page.at(0, 0) == browser::colors::kGray);  // the frame on its edge pixels
     CHECK(page.at(199, 119) == browser::colors::kGray);
 
     // Which pixel rows of the panel have ink: every one of the text lines

@@ -23,8 +23,9 @@ const browser::StageDefaults kDefaults{
     .keys = "f@2 g",
     .frames = 30,
     .every = 10,
-    .extra_options = {{.name = "--scene", .value_name = "FILE", .help = "scene to load", .default_value = "default.txt"},
-                      {.name = "--dump", .value_name = "FILE", .help = "state dump", .default_value = ""}},
+    .extra_options =
+        {{.name = "--scene", .value_name = "FILE", .help = "scene to load", .default_value = "default.txt"},
+         {.name = "--dump", .value_name = "FILE", .help = "state dump", .default_value = ""}},
 };
 
 using test::CapturedOutput;
@@ -88,9 +89,9 @@ TEST_CASE("command_line: no arguments give the stage's defaults") {
 }
 
 TEST_CASE("command_line: each option is read") {
-    const Outcome outcome = parse({"--out", "pictures/run 1", "--frames", "120", "--every=7", "--seed",
-                                   "18446744073709551615", "--keys", "UP*2@100 comma", "--frame-ms", "2.5",
-                                   "--dump", "state.txt", "--scene=box.txt", "--"});
+    const Outcome outcome =
+        parse({"--out", "pictures/run 1", "--frames", "120", "--every=7", "--seed", "18446744073709551615", "--keys",
+               "UP*2@100 comma", "--frame-ms", "2.5", "--dump", "state.txt", "--scene=box.txt", "--"});
     REQUIRE(outcome.parsed.exit_status == 0);
     REQUIRE(outcome.parsed.options.has_value());
     const browser::Options& options = *outcome.parsed.options;
@@ -108,7 +109,8 @@ TEST_CASE("command_line: each option is read") {
 }
 
 TEST_CASE("command_line: edge values that are allowed") {
-    const Outcome outcome = parse({"--frames", "1", "--every", "0", "--seed", "0", "--keys", "", "--frame-ms", "10000"});
+    const Outcome outcome =
+        parse({"--frames", "1", "--every", "0", "--seed", "0", "--keys", "", "--frame-ms", "10000"});
     REQUIRE(outcome.parsed.options.has_value());
     CHECK(outcome.parsed.options->frames == 1);
     CHECK(outcome.parsed.options->every == 0);
@@ -124,8 +126,8 @@ TEST_CASE("command_line: --help prints the usage and stops with status 0") {
         CHECK_FALSE(outcome.parsed.options.has_value());
         CHECK(outcome.err.empty());
         CHECK_THAT(outcome.out, Catch::Contains("9.9 A Test Stage"));
-        for (const char* option : {"--out", "--frames", "--from", "--every", "--gif", "--no-gif", "--gif-every", "--seed", "--keys",
-                                   "--frame-ms", "--scene", "--dump"}) {
+        for (const char* option : {"--out", "--frames", "--from", "--every", "--gif", "--no-gif", "--gif-every",
+                                   "--seed", "--keys", "--frame-ms", "--scene", "--dump"}) {
             CHECK_THAT(outcome.out, Catch::Contains(option));
         }
     }
@@ -163,12 +165,12 @@ TEST_CASE("command_line: bad key scripts are usage errors") {
 }
 
 TEST_CASE("command_line: the reader's keys after the last frame are a usage error") {
-    check_rejected({"--keys", "f@30"}, "--keys");                 // the default run has frames 0..29
+    check_rejected({"--keys", "f@30"}, "--keys");  // the default run has frames 0..29
     check_rejected({"--keys", "f@5", "--frames", "5"}, "--keys");
 }
 
 TEST_CASE("command_line: a shorter run simply stops before the rest of the default script") {
-    const Outcome shorter = parse({"--frames", "2"});             // the default script presses at frame 2
+    const Outcome shorter = parse({"--frames", "2"});  // the default script presses at frame 2
     REQUIRE(shorter.parsed.options);
     CHECK(shorter.parsed.options->frames == 2);
     CHECK_FALSE(shorter.parsed.options->keys_given);
@@ -231,11 +233,13 @@ TEST_CASE("command_line: --from starts the pictures at a frame the run reaches")
     REQUIRE(outcome.parsed.options.has_value());
     CHECK(outcome.parsed.options->from == 99);
     CHECK(parse({}).parsed.options->from == 0);
-    check_rejected({"--frames", "100", "--from", "100"}, "--from: frame 100 is not run: --frames 100 runs frames 0 to 99");
+    check_rejected({"--frames", "100", "--from", "100"},
+                   "--from: frame 100 is not run: --frames 100 runs frames 0 to 99");
     check_rejected({"--from", "-1"}, "--from: must be a whole number from 0");
     // Only the frames from F on count towards the most pictures a run may save.
     CHECK(parse({"--frames", "10100", "--from", "100", "--every", "10"}).parsed.exit_status == 0);
-    check_rejected({"--frames", "10101", "--from", "100", "--every", "10"}, "--every: 10001 frames would save 1001 pictures");
+    check_rejected({"--frames", "10101", "--from", "100", "--every", "10"},
+                   "--every: 10001 frames would save 1001 pictures");
     check_rejected({"--live", "--from", "5"}, "--from: a --live session writes no pictures");
 }
 
@@ -322,8 +326,8 @@ TEST_CASE("command_line: a key script may press only the stage's keys") {
     const Outcome fine = parse({"--keys", "f 7@3 up@4 G"}, stage);
     REQUIRE(fine.parsed.options.has_value());
     CHECK(fine.parsed.options->stage_keys.text() == "f, g, 0-9, up, down");
-    check_rejected({"--keys", "f g@2 h@3"},
-                   "--keys: \"h\" is not a key of this stage (its keys: f, g, 0-9, up, down)", stage);
+    check_rejected({"--keys", "f g@2 h@3"}, "--keys: \"h\" is not a key of this stage (its keys: f, g, 0-9, up, down)",
+                   stage);
     check_rejected({"--keys", "comma"}, "\"comma\" is not a key of this stage", stage);
     // A stage that declares no keys takes any.
     CHECK(parse({"--keys", "h comma"}).parsed.options.has_value());
@@ -368,9 +372,8 @@ TEST_CASE("command_line: --live, --record and what goes with them") {
         return;
     }
     const browser::StageDefaults stage = with_keys();
-    const Outcome outcome = parse({"--live", "--record", "my session.keys", "--seed", "7", "--scene", "box.txt",
-                                   "--scale", "2"},
-                                  stage);
+    const Outcome outcome =
+        parse({"--live", "--record", "my session.keys", "--seed", "7", "--scene", "box.txt", "--scale", "2"}, stage);
     REQUIRE(outcome.parsed.options.has_value());
     const browser::Options& options = *outcome.parsed.options;
     CHECK(options.live.on);
@@ -394,9 +397,10 @@ TEST_CASE("command_line: --live, --record and what goes with them") {
     check_rejected({"--live", "--keys", "h"}, "\"h\" is not a key of this stage", stage);
 
     // A live session writes no pictures and runs until the reader ends it.
-    for (const std::vector<std::string>& arguments :
-         {std::vector<std::string>{"--live", "--every", "5"}, {"--live", "--out", "x"}, {"--live", "--gif"},
-          {"--live", "--gif-every", "3"}}) {
+    for (const std::vector<std::string>& arguments : {std::vector<std::string>{"--live", "--every", "5"},
+                                                      {"--live", "--out", "x"},
+                                                      {"--live", "--gif"},
+                                                      {"--live", "--gif-every", "3"}}) {
         check_rejected(arguments, "a --live session writes no pictures; record it with --record FILE");
     }
     check_rejected({"--live", "--frames", "100"}, "--frames: a --live session runs until Escape");

@@ -38,7 +38,8 @@ std::string quoted(const fs::path& path) {
 // compare_png with `arguments`, stopped after 20 s should it wait for ever (status 124).
 Run compare(const test::ScratchFolder& folder, const std::string& arguments) {
     const fs::path err = folder.path.string() + ".err";
-    const std::string line = "timeout 20 " + quoted(COMPARE_PNG_PROGRAM) + " " + arguments + " >/dev/null 2>" + quoted(err);
+    const std::string line =
+        "timeout 20 " + quoted(COMPARE_PNG_PROGRAM) + " " + arguments + " >/dev/null 2>" + quoted(err);
     const int raw = std::system(line.c_str());
     Run run;
     if (raw != -1 && WIFEXITED(raw)) run.status = WEXITSTATUS(raw);
@@ -109,7 +110,8 @@ TEST_CASE("compare_png: --diff and --diff-dir never replace a link, a FIFO, a de
     checkTrouble(folder, pair + " --diff " + quoted(folder.path / "link"), "it is a symbolic link");
     checkTrouble(folder, pair + " --diff " + quoted(folder.path / "fifo"), "it is a FIFO");
     checkTrouble(folder, pair + " --diff /dev/null", "it is a device");
-    checkTrouble(folder, pair + " --diff " + quoted(folder.path / "second.txt"), "it is a file with 2 names (hard links)");
+    checkTrouble(folder, pair + " --diff " + quoted(folder.path / "second.txt"),
+                 "it is a file with 2 names (hard links)");
     checkTrouble(folder, pair + " --diff " + quoted(a), "which the run reads");
     fs::create_directory(folder.path / "elsewhere");
     fs::create_directory_symlink("elsewhere", folder.path / "diffs");

@@ -79,8 +79,8 @@ TEST_CASE("contact_sheet: a thumbnail pixel is the rounded mean of its block") {
     const Image small = browser::shrink(page, 3);
     CHECK(small.width == 3);
     CHECK(small.height == 2);
-    CHECK(small.at(0, 0) == Color{40, 255, 0, 255});  // 361 / 9 = 40.1
-    CHECK(small.at(2, 0) == Color{67, 67, 67, 255});  // 201 / 3 = 67
+    CHECK(small.at(0, 0) == Color{40, 255, 0, 255});   // 361 / 9 = 40.1
+    CHECK(small.at(2, 0) == Color{67, 67, 67, 255});   // 201 / 3 = 67
     CHECK(small.at(1, 1) == browser::colors::kWhite);  // untouched paper stays white
     CHECK(browser::shrink(page, 1).rgba == page.rgba);
 }

@@ -85,12 +85,12 @@ RunResult run_square(const browser::Options& options) {
 }  // namespace
 
 TEST_CASE("gif: a GIF frame lasts N animation frames, in whole centiseconds") {
-    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 2) == 3);   // 33.3 ms
-    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 3) == 5);   // 50 ms
-    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 1) == 2);   // 16.7 ms
+    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 2) == 3);  // 33.3 ms
+    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 3) == 5);  // 50 ms
+    CHECK(browser::gif_delay_centiseconds(1000.0 / 60.0, 1) == 2);  // 16.7 ms
     CHECK(browser::gif_delay_centiseconds(10.0, 1) == 1);
-    CHECK(browser::gif_delay_centiseconds(14.0, 1) == 1);            // 1.4 cs rounds down
-    CHECK(browser::gif_delay_centiseconds(1.0, 1) == 1);             // never 0: viewers treat 0 oddly
+    CHECK(browser::gif_delay_centiseconds(14.0, 1) == 1);                   // 1.4 cs rounds down
+    CHECK(browser::gif_delay_centiseconds(1.0, 1) == 1);                    // never 0: viewers treat 0 oddly
     CHECK(browser::gif_delay_centiseconds(10'000.0, 10'000'000) == 65535);  // the format's limit
 }
 
@@ -104,7 +104,7 @@ struct DecodedGif {
     int width = 0, height = 0;
     std::vector<Image> frames;
     std::vector<int> delays_cs;
-    std::vector<Color> palette;  // the global colour table
+    std::vector<Color> palette;       // the global colour table
     std::vector<GifImageDesc> parts;  // where each frame's image lies
     bool loops_forever = false;
 };
@@ -221,8 +221,8 @@ TEST_CASE("gif: the picture of frame 6 is the page after frame 6, in palette col
     // palette itself; only anti-aliased edges move to a neighbour.
     CHECK(exact > page.width * page.height * 9 / 10);
     CHECK(page.at(3, 3) == browser::colors::kBlue);
-    CHECK(shown.at(3, 3) == browser::colors::kBlue);          // a corner of the square
-    CHECK(shown.at(0, 0) == browser::colors::kGray);          // the canvas frame
+    CHECK(shown.at(3, 3) == browser::colors::kBlue);  // a corner of the square
+    CHECK(shown.at(0, 0) == browser::colors::kGray);  // the canvas frame
     CHECK(shown.at(page.width - 1, 0) == browser::colors::kWhite);
 }
 
@@ -295,7 +295,7 @@ TEST_CASE("gif: --gif-every 1 puts every frame in, and the contact sheet comes t
     const RunResult result = run_square(options);
     REQUIRE(result.status == 0);
     CHECK(names_in(out) == std::vector<std::string>{".manifest", "animation.gif", "contact_sheet.png", "final.png",
-                                                                   "frame_0000.png", "frame_0002.png"});
+                                                    "frame_0000.png", "frame_0002.png"});
     CHECK_THAT(result.out, Catch::EndsWith(", contact_sheet.png and animation.gif (3 frames)\n"));
     CHECK(decode(out / "animation.gif").frames.size() == 3);
 }

@@ -165,7 +165,8 @@ TEST_CASE("key_script: a key set reads names and ranges, and lists its keys in K
         INFO(browser::key_name(key));
         CHECK(set.contains(key));
     }
-    for (int digit = 0; digit <= 9; ++digit) CHECK(set.contains(static_cast<Key>(static_cast<int>(Key::Digit0) + digit)));
+    for (int digit = 0; digit <= 9; ++digit)
+        CHECK(set.contains(static_cast<Key>(static_cast<int>(Key::Digit0) + digit)));
     CHECK_FALSE(set.contains(Key::E));
     CHECK_FALSE(set.contains(Key::I));
     // Letters one by one, three or more neighbouring digits as a range.
@@ -175,8 +176,8 @@ TEST_CASE("key_script: a key set reads names and ranges, and lists its keys in K
     CHECK(browser::KeySet::parse("").empty());
     CHECK(browser::KeySet::parse("").text().empty());
     CHECK_THROWS_AS(browser::KeySet::parse("f left"), KeyScriptError);
-    CHECK_THROWS_AS(browser::KeySet::parse("9-0"), KeyScriptError);   // backwards
-    CHECK_THROWS_AS(browser::KeySet::parse("a-9"), KeyScriptError);   // across letters and digits
+    CHECK_THROWS_AS(browser::KeySet::parse("9-0"), KeyScriptError);  // backwards
+    CHECK_THROWS_AS(browser::KeySet::parse("a-9"), KeyScriptError);  // across letters and digits
     CHECK_THROWS_AS(browser::KeySet::parse(",-a"), KeyScriptError);
 }
 

@@ -36,7 +36,9 @@ namespace {
 class MarkingPage : public browser::PageScripts {
 public:
     explicit MarkingPage(browser::Document& document) : document_(document) {}
-    void onKeyDown(Key key) override { document_.ui_echo += browser::key_name(key) + "@" + std::to_string(frame_) + " "; }
+    void onKeyDown(Key key) override {
+        document_.ui_echo += browser::key_name(key) + "@" + std::to_string(frame_) + " ";
+    }
     void onAnimationFrame() override {
         browser::Canvas& canvas = document_.canvas;
         canvas.clear();
@@ -193,17 +195,17 @@ TEST_CASE("live: keys land in the next frame that runs; pausing stops the frames
     options.live.record = folder.path / "my session.keys";  // a space, for the shell to see quoted
     // Refresh 0 shows frame 0. Then, one batch per refresh:
     const Session session = play(options, {
-                                              {key(Key::F), key(Key::G)},  // 1: frame 1, after f and g
-                                              {},                          // 2: frame 2
-                                              {kPause},                    // 3: no frame
-                                              {key(Key::D)},               // 4: d waits
-                                              {kStep},                     // 5: frame 3, after d
-                                              {key(Key::D), kStep, kStep}, // 6: frame 4, after d (one step a refresh)
-                                              {},                          // 7: frame 5, the second step
-                                              {},                          // 8: paused, no frame
-                                              {kPause, key(Key::H)},       // 9: frame 6, after h
-                                              {},                          // 10: frame 7
-                                              {key(Key::F), kEnd},         // 11: ends; this f never reaches the page
+                                              {key(Key::F), key(Key::G)},   // 1: frame 1, after f and g
+                                              {},                           // 2: frame 2
+                                              {kPause},                     // 3: no frame
+                                              {key(Key::D)},                // 4: d waits
+                                              {kStep},                      // 5: frame 3, after d
+                                              {key(Key::D), kStep, kStep},  // 6: frame 4, after d (one step a refresh)
+                                              {},                           // 7: frame 5, the second step
+                                              {},                           // 8: paused, no frame
+                                              {kPause, key(Key::H)},        // 9: frame 6, after h
+                                              {},                           // 10: frame 7
+                                              {key(Key::F), kEnd},          // 11: ends; this f never reaches the page
                                           });
     CHECK(session.status == 0);
     CHECK(session.err.empty());
@@ -217,8 +219,8 @@ TEST_CASE("live: keys land in the next frame that runs; pausing stops the frames
     CHECK(session.out == "recorded 5 key presses in 8 frames (0.08 s) to " + options.live.record.string() +
                              "; replay them into pictures" + (browser::gif_supported() ? " and a GIF" : "") +
                              " with:\n"
-                             "  build/s9_9_test --seed 7 --keys \"$(cat '" + options.live.record.string() +
-                             "')\" --frames 8 --from 1 --every 30 --gif\n");
+                             "  build/s9_9_test --seed 7 --keys \"$(cat '" +
+                             options.live.record.string() + "')\" --frames 8 --from 1 --every 30 --gif\n");
 
     // The replay's last frame is the last page shown, pixel for pixel, and the page the
     // marks tell: keys before the frames the script names.
@@ -283,8 +285,8 @@ TEST_CASE("live: a key script that cannot be written is given on stderr, so the 
     // The folder goes away while the window is open.
     const Session session = play(options, {{key(Key::F)}}, [&] { fs::remove_all(folder.path); });
     CHECK(session.status == 1);
-    CHECK(session.err == "cannot write the key script to \"" + options.live.record.string() +
-                             "\": cannot write it; it was: f@1\n");
+    CHECK(session.err ==
+          "cannot write the key script to \"" + options.live.record.string() + "\": cannot write it; it was: f@1\n");
     CHECK(session.out.empty());
 }
 
@@ -309,8 +311,9 @@ TEST_CASE("live: F12 saves the page shown, which is the replay's picture of that
     CHECK(session.status == 0);
     CHECK(session.err.empty());
     CHECK(folder.files() == std::vector<std::string>{"s.keys", "s9_9_frame_0002.png", "s9_9_frame_0003.png"});
-    CHECK_THAT(session.out, Catch::StartsWith("F12: saved frame 2 to " + (folder.path / "s9_9_frame_0002.png").string() +
-                                              "\nF12: saved frame 3 to "));
+    CHECK_THAT(session.out,
+               Catch::StartsWith("F12: saved frame 2 to " + (folder.path / "s9_9_frame_0002.png").string() +
+                                 "\nF12: saved frame 3 to "));
     // The screenshots are the pages without the status line, as the replay draws them.
     const std::string script = read_text(options.live.record);
     CHECK(script == "f@1\n");
@@ -318,7 +321,8 @@ TEST_CASE("live: F12 saves the page shown, which is the replay's picture of that
     for (const char* frame : {"0002", "0003"}) {
         INFO("frame " << frame);
         const browser::Image saved = browser::read_png(folder.path / ("s9_9_frame_" + std::string(frame) + ".png"));
-        const browser::Image replayed = browser::read_png(folder.path / "replay" / ("frame_" + std::string(frame) + ".png"));
+        const browser::Image replayed =
+            browser::read_png(folder.path / "replay" / ("frame_" + std::string(frame) + ".png"));
         CHECK(saved.width == replayed.width);
         CHECK(saved.height == replayed.height);
         CHECK(saved.rgba == replayed.rgba);
@@ -335,8 +339,9 @@ TEST_CASE("live: a screenshot that cannot be saved is one line on stderr; the se
     const Session session = play(options, {{kScreenshot}, {key(Key::F)}, {}});
     CHECK(session.status == 1);
     CHECK(session.shown.size() == 4);  // refreshes 0 to 3: the session went on
-    CHECK_THAT(session.err, Catch::StartsWith("F12: cannot save frame 0 to \"" +
-                                              (options.live.screenshot_folder / "s9_9_frame_0000.png").string() + "\": "));
+    CHECK_THAT(session.err,
+               Catch::StartsWith("F12: cannot save frame 0 to \"" +
+                                 (options.live.screenshot_folder / "s9_9_frame_0000.png").string() + "\": "));
     CHECK(session.err.find('\n') == session.err.size() - 1);
     CHECK(folder.files().empty());
 }

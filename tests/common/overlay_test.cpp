@@ -158,10 +158,18 @@ TEST_CASE("overlay: the legend is a box at the bottom of the echo panel, a swatc
     int purple_rows = 0, red_rows = 0, lowest_purple = 0, highest_red = 300;
     for (int j = 0; j < 300; ++j) {
         for (int i = 200; i < 240; ++i) {
-            if (with.at(i, j) == kPurple) { ++purple_rows; lowest_purple = std::max(lowest_purple, j); break; }
+            if (with.at(i, j) == kPurple) {
+                ++purple_rows;
+                lowest_purple = std::max(lowest_purple, j);
+                break;
+            }
         }
         for (int i = 200; i < 240; ++i) {
-            if (with.at(i, j) == browser::colors::kRed) { ++red_rows; highest_red = std::min(highest_red, j); break; }
+            if (with.at(i, j) == browser::colors::kRed) {
+                ++red_rows;
+                highest_red = std::min(highest_red, j);
+                break;
+            }
         }
     }
     CHECK(purple_rows == 12);

@@ -20,14 +20,14 @@ namespace {
 
 using test::ScratchFolder;
 
-
 // Every pixel different, every channel value used, alpha included.
 Image test_pattern(int width, int height) {
     Image image(width, height);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            image.set(x, y, Color{static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>(y * 13),
-                                  static_cast<std::uint8_t>(x ^ y), static_cast<std::uint8_t>(255 - x)});
+            image.set(x, y,
+                      Color{static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>(y * 13),
+                            static_cast<std::uint8_t>(x ^ y), static_cast<std::uint8_t>(255 - x)});
         }
     }
     return image;

@@ -110,6 +110,8 @@ TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
     // The chapter 4 defaults, so that every world value below must come from the file.
     const auto scene = load_scene(file, WorldSettings{});
 
+    // The fields as the file above gives them, which the layout would put one a line:
+    // clang-format off
     CHECK(scene.world == WorldSettings{.width = 800, .height = 450, .gravity = {0, 20}, .dt = 0.016666666666666666,
                                        .relaxation_iterations = 15, .correction_rate = 0.8, .movement = true,
                                        .positional_correction = true, .remove_out_of_bounds = false});
@@ -121,6 +123,7 @@ TEST_CASE("scene_file: the example scene loads with exactly its numbers") {
     CHECK(scene.bodies[1] == BodyDescription{.shape = ShapeKind::circle, .center = {100, 50}, .radius = 20,
                                              .mass = 5, .friction = 0.5, .restitution = 0.4, .velocity = {10, 0},
                                              .angular_velocity = 0});
+    // clang-format on
 }
 
 TEST_CASE("scene_file: a minimal scene takes every default") {
@@ -135,9 +138,8 @@ TEST_CASE("scene_file: a minimal scene takes every default") {
 
 TEST_CASE("scene_file: world keys left out come from the stage's defaults, one by one") {
     ScratchFolder folder("partial_world");
-    const auto scene =
-        load_scene(folder.write("scene.json", R"({"world": {"gravity": [1.5, -2], "movement": false}})"),
-                   kDemoDefaults);
+    const auto scene = load_scene(folder.write("scene.json", R"({"world": {"gravity": [1.5, -2], "movement": false}})"),
+                                  kDemoDefaults);
     WorldSettings expected = kDemoDefaults;
     expected.gravity = {1.5, -2};
     expected.movement = false;
@@ -229,8 +231,8 @@ TEST_CASE("scene_file: malformed JSON is refused with line and column") {
     const std::vector<Case> cases{
         {"{\n  \"bodies\": [\n    {\"shape\": \"circle\",}\n  ]\n}", "line 3, column 24"},  // trailing comma
         {"{\"world\": {}} x", "line 1, column 15"},                                         // text after the end
-        {"{\n  \"world\": {\n", "line 3, column 1"},                                       // cut short
-        {"", "line 1, column 1"},                                                            // empty file
+        {"{\n  \"world\": {\n", "line 3, column 1"},                                        // cut short
+        {"", "line 1, column 1"},                                                           // empty file
         {"{\"é\": tru}", "line 1, column 10"},  // a column counts characters, not UTF-8 bytes
     };
     for (const Case& c : cases) {
@@ -261,11 +263,14 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
         {R"({"bodies": [3]})", "bodies[0]: must be an object {...} (got 3)"},
         // Unknown keys, everywhere, and keys of the other shape.
         {R"({"bodys": []})", "bodys: unknown key; a scene takes world, bodies"},
-        {world(R"("gravty": [0, 1])"), "world.gravty: unknown key; this stage's world takes width, height, gravity, dt, "},
-        {body(circle + R"(, "raduis": 2)"), "bodies[0].raduis: unknown key; a circle body takes shape, center, "
-                                            "radius, mass, friction, restitution, angle, velocity, angular_velocity"},
-        {body(rectangle + R"(, "radius": 2)"), "bodies[0].radius: unknown key; a rectangle body takes shape, center, "
-                                               "width, height, mass, "},
+        {world(R"("gravty": [0, 1])"),
+         "world.gravty: unknown key; this stage's world takes width, height, gravity, dt, "},
+        {body(circle + R"(, "raduis": 2)"),
+         "bodies[0].raduis: unknown key; a circle body takes shape, center, "
+         "radius, mass, friction, restitution, angle, velocity, angular_velocity"},
+        {body(rectangle + R"(, "radius": 2)"),
+         "bodies[0].radius: unknown key; a rectangle body takes shape, center, "
+         "width, height, mass, "},
         {body(circle + R"(, "width": 2)"), "bodies[0].width: unknown key; a circle body takes "},
         // Missing keys and unknown shapes.
         {body(R"("center": [0, 0], "radius": 1)"), R"(bodies[0].shape: missing; every body needs "shape": )"},
@@ -278,7 +283,8 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
          R"(bodies[0].shape: must be "rectangle" or "circle" (got "triangle"))"},
         {body(R"("shape": 3)"), R"(bodies[0].shape: must be "rectangle" or "circle" (got 3))"},
         // Wrong types.
-        {body(circle + R"(, "mass": "5")"), R"(bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got "5"))"},
+        {body(circle + R"(, "mass": "5")"),
+         R"(bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got "5"))"},
         {world(R"("movement": 1)"), "world.movement: must be true or false (got 1)"},
         {world(R"("positional_correction": "yes")"),
          R"(world.positional_correction: must be true or false (got "yes"))"},
@@ -286,7 +292,8 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
         {world(R"("gravity": [0, 1, 2])"), "world.gravity: must be an array of two numbers [x, y] (got [0,1,2])"},
         {world(R"("gravity": {"x": 0, "y": 1})"), "world.gravity: must be an array of two numbers [x, y] (got {"},
         {world(R"("gravity": [0, "down"])"), R"(world.gravity[1]: must be a finite number (got "down"))"},
-        {body(circle + R"(, "velocity": [null, 0])"), "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got null)"},
+        {body(circle + R"(, "velocity": [null, 0])"),
+         "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got null)"},
         {world(R"("dt": true)"), "world.dt: must be a number in [1e-5, 1] (got true)"},
         // Numbers too large for a double; JSON has no way to write NaN or Infinity at all.
         {world(R"("gravity": [0, 1e999])"), "world.gravity[1]: must be a finite number (got 1e999)"},
@@ -309,11 +316,16 @@ TEST_CASE("scene_file: every kind of bad value is refused with its path and prob
          "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e-155)"},
         {body(R"("shape": "circle", "center": [0, 0], "radius": 1e300)"),
          "bodies[0].radius: must be a number in [0.01, 1e5] (px) (got 1e+300)"},
-        {body(circle + R"(, "mass": 1e-320)"), "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 1e-320)"},
-        {body(circle + R"(, "mass": 1e7)"), "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 10000000.0)"},
-        {body(circle + R"(, "velocity": [1e308, 0])"), "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got 1e+308)"},
-        {body(circle + R"(, "angular_velocity": -1e5)"), "bodies[0].angular_velocity: must be a number in [-1e4, 1e4] (rad/s) (got -100000.0)"},
-        {body(R"("shape": "circle", "center": [2e6, 0], "radius": 1)"), "bodies[0].center[0]: must be a number in [-1e6, 1e6] (px) (got 2000000.0)"},
+        {body(circle + R"(, "mass": 1e-320)"),
+         "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 1e-320)"},
+        {body(circle + R"(, "mass": 1e7)"),
+         "bodies[0].mass: must be 0 (static) or a number in [1e-3, 1e6] (got 10000000.0)"},
+        {body(circle + R"(, "velocity": [1e308, 0])"),
+         "bodies[0].velocity[0]: must be a number in [-1e6, 1e6] (px/s) (got 1e+308)"},
+        {body(circle + R"(, "angular_velocity": -1e5)"),
+         "bodies[0].angular_velocity: must be a number in [-1e4, 1e4] (rad/s) (got -100000.0)"},
+        {body(R"("shape": "circle", "center": [2e6, 0], "radius": 1)"),
+         "bodies[0].center[0]: must be a number in [-1e6, 1e6] (px) (got 2000000.0)"},
         {body(circle + R"(, "angle": 1e7)"), "bodies[0].angle: must be a number in [-1e6, 1e6] (rad) (got 10000000.0)"},
         {body(circle + R"(, "friction": 101)"), "bodies[0].friction: must be a number in [0, 100] (got 101)"},
         {body(circle + R"(, "restitution": -0.1)"),
@@ -357,7 +369,8 @@ TEST_CASE("scene_file: messages stay one short line whatever the file holds") {
                                                          "correction_rate, movement, positional_correction, "
                                                          "remove_out_of_bounds, method");
     // A long value, cut short.
-    const fs::path long_value = folder.write("long.json", std::string(R"({"bodies": ")").append(500, 'x').append("\"}"));
+    const fs::path long_value =
+        folder.write("long.json", std::string(R"({"bodies": ")").append(500, 'x').append("\"}"));
     const std::string message = refusal(long_value);
     CHECK(message.find('\n') == std::string::npos);
     CHECK(message.size() < long_value.string().size() + 100);
@@ -394,8 +407,8 @@ TEST_CASE("scene_file: nesting deeper than a scene can use is refused at the fir
     ScratchFolder folder("deep");
     // Deep enough to overflow the stack of any reader that recurses (issue 15: 100,000).
     const std::size_t depth = 100'000;
-    const fs::path file =
-        folder.write("deep.json", std::string(R"({"world": {"gravity": )").append(depth, '[').append(depth, ']').append("}}"));
+    const fs::path file = folder.write(
+        "deep.json", std::string(R"({"world": {"gravity": )").append(depth, '[').append(depth, ']').append("}}"));
     CHECK(refusal(file) == file.string() + R"(: world.gravity[0][0]: nested deeper than a scene can use (4 levels: )"
                                            R"({"bodies": [{"center": [x, y]}]}))");
     // Four levels, as deep as a scene goes, are read (and refused for what they hold).
@@ -412,7 +425,8 @@ TEST_CASE("scene_file: a NUL byte is refused where it stands; the text after it 
 TEST_CASE("scene_file: a key a megabyte long is shown quoted and cut, and the parser's phrase is cut at a word") {
     ScratchFolder folder("long_key");
     const fs::path key = folder.write("key.json", std::string("{\"").append(1'000'000, 'k').append("\": 1}"));
-    CHECK(refusal(key) == key.string() + ": [\"" + std::string(20, 'k') + "...\"]: unknown key; a scene takes world, bodies");
+    CHECK(refusal(key) ==
+          key.string() + ": [\"" + std::string(20, 'k') + "...\"]: unknown key; a scene takes world, bodies");
     CHECK(browser::first_words("one two three", 9) == "one...");
     CHECK(browser::first_words("one two three", 13) == "one two three");
     CHECK(browser::first_words("abcdefghij", 6) == "abc...");
@@ -425,7 +439,8 @@ TEST_CASE("scene_file: more bodies than a run can afford are refused") {
         text.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [0, 0], "radius": 1})");
     }
     const fs::path file = folder.write("many.json", text + "]}");
-    CHECK(refusal(file) == file.string() + ": bodies: more than 2500 bodies (got 2501); every step tests every pair of them");
+    CHECK(refusal(file) ==
+          file.string() + ": bodies: more than 2500 bodies (got 2501); every step tests every pair of them");
 }
 
 TEST_CASE("scene_file: text that is not UTF-8, or holds control characters, is escaped in the one line") {
@@ -434,10 +449,13 @@ TEST_CASE("scene_file: text that is not UTF-8, or holds control characters, is e
     const std::string message = refusal(bytes);
     CHECK(message.find('\xff') == std::string::npos);
     // The parser's phrase says what is wrong; the bytes it read are not quoted at all.
-    CHECK_THAT(message, Catch::EndsWith("malformed JSON: syntax error while parsing value - invalid string: ill-formed UTF-8 byte"));
+    CHECK_THAT(
+        message,
+        Catch::EndsWith("malformed JSON: syntax error while parsing value - invalid string: ill-formed UTF-8 byte"));
     // A file name with a line break and an escape sequence in it.
     const fs::path strange = folder.write("a\nb\x1b[31m.json", R"({"world": {"dt": 0}})");
-    CHECK(refusal(strange) == folder.path.string() + R"(/a\nb\x1b[31m.json: world.dt: must be a number in [1e-5, 1] (got 0))");
+    CHECK(refusal(strange) ==
+          folder.path.string() + R"(/a\nb\x1b[31m.json: world.dt: must be a number in [1e-5, 1] (got 0))");
 }
 
 TEST_CASE("scene_file: the file name appears as it was given") {
@@ -465,7 +483,7 @@ TEST_CASE("scene_file: a key the stage does not list is refused, naming the keys
     ScratchFolder folder("not_read");
     const fs::path file = folder.write("scene.json", R"({"world": {"broad_phase": "grid"}})");
     CHECK_THAT(refusal(file), Catch::StartsWith(file.string() + ": world.broad_phase: unknown key; this stage's "
-                                                               "world takes width, height, gravity, dt, "));
+                                                                "world takes width, height, gravity, dt, "));
     // A stage that reads no world key at all refuses every one.
     std::vector<WorldKey> none;
     CHECK_THROWS_WITH(browser::load_scene(folder.write("dt.json", R"({"world": {"dt": 0.01}})"), none),

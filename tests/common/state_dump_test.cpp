@@ -30,7 +30,6 @@ using test::ScratchFolder;
 
 constexpr const char* kHeader = "step,index,shape,cx,cy,angle,vx,vy,angular_velocity";
 
-
 std::vector<std::string> lines_of(const fs::path& file) {
     std::ifstream in(file);
     std::vector<std::string> lines;

@@ -41,21 +41,21 @@ TEST_CASE("vec2: add, subtract, scale and their operators") {
 }
 
 TEST_CASE("vec2: dot product is |a||b|cos of the angle between them") {
-    CHECK(Vec2{1, 0}.dot(Vec2{0, 1}) == 0.0);        // perpendicular
-    CHECK(Vec2{2, 3}.dot(Vec2{4, -5}) == -7.0);      // 8 - 15
-    CHECK(Vec2{2, 0}.dot(Vec2{3, 3}) == 6.0);        // 2 * sqrt(18) * cos 45 = 6
+    CHECK(Vec2{1, 0}.dot(Vec2{0, 1}) == 0.0);    // perpendicular
+    CHECK(Vec2{2, 3}.dot(Vec2{4, -5}) == -7.0);  // 8 - 15
+    CHECK(Vec2{2, 0}.dot(Vec2{3, 3}) == 6.0);    // 2 * sqrt(18) * cos 45 = 6
 }
 
 TEST_CASE("vec2: cross sign convention on the y-down canvas") {
     // x cross y = +1: from +x (right) a quarter turn to +y (down) is clockwise on screen.
     CHECK(Vec2{1, 0}.cross(Vec2{0, 1}) == 1.0);
     CHECK(Vec2{0, 1}.cross(Vec2{1, 0}) == -1.0);
-    CHECK(Vec2{2, 3}.cross(Vec2{4, 5}) == -2.0);     // 2*5 - 3*4
-    CHECK(Vec2{2, 3}.cross(Vec2{4, 6}) == 0.0);      // parallel
+    CHECK(Vec2{2, 3}.cross(Vec2{4, 5}) == -2.0);  // 2*5 - 3*4
+    CHECK(Vec2{2, 3}.cross(Vec2{4, 6}) == 0.0);   // parallel
 }
 
 TEST_CASE("vec2: rotate about the origin and about another centre") {
-    requireNear(Vec2{1, 0}.rotate({0, 0}, kPi / 2), {0, 1});   // right turns to down
+    requireNear(Vec2{1, 0}.rotate({0, 0}, kPi / 2), {0, 1});  // right turns to down
     requireNear(Vec2{1, 0}.rotate({0, 0}, kPi), {-1, 0});
     // About (10, 20): the offset (3, -1) turns by pi/2 to (1, 3), by pi to (-3, 1).
     requireNear(Vec2{13, 19}.rotate({10, 20}, kPi / 2), {11, 23});

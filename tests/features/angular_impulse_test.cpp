@@ -32,9 +32,7 @@ engine::WorldSettings world(bool positional_correction, Vec2 gravity = kNoGravit
     return settings;
 }
 
-void requireConserved(double before, double after) {
-    CHECK(after == Approx(before).epsilon(1e-9));
-}
+void requireConserved(double before, double after) { CHECK(after == Approx(before).epsilon(1e-9)); }
 
 // A ball of radius 10 and mass 3 (mu 0.5, e 0) sliding onto a static floor at (30, 60)
 // px/s, 1 px deep already, not turning; one step of the world later.
@@ -192,7 +190,7 @@ TEST_CASE("angular impulse: a disc rolls down a slope at 2/3 g sin(slope), makin
     const engine::PhysicalAttributes grippy_dead_static{.mass = 0, .friction = 1, .restitution = 0};
     engine::Rectangle& slope = page.core.add(engine::Rectangle({400, 300}, 800, 20, grippy_dead_static));
     slope.rotate(kSlope);
-    const Vec2 up_out{std::sin(kSlope), -std::cos(kSlope)};    // the slope's top face normal
+    const Vec2 up_out{std::sin(kSlope), -std::cos(kSlope)};  // the slope's top face normal
     const Vec2 downhill{std::cos(kSlope), std::sin(kSlope)};
     const Vec2 start = Vec2{400, 300} + up_out * (10 + kRadius - 0.01) - downhill * 200;
     engine::Circle& ball = page.core.add(engine::Circle(start, kRadius, {kMass, 1, 0}));

@@ -128,7 +128,10 @@ TEST_CASE("broad phase choice: the scene file's broad_phase decides which pairs 
     // test; the grid (cells three radii wide, each circle in a cell of its own) looks at
     // a few per circle (measured: under 1 in 20 of the pairs; bound 1 in 5). Left out,
     // the key keeps this stage's grid.
-    struct Case { const char* key; BroadPhaseKind kind; };
+    struct Case {
+        const char* key;
+        BroadPhaseKind kind;
+    };
     const Case cases[] = {{R"("broad_phase": "bounding_circle")", BroadPhaseKind::bounding_circle},
                           {R"("broad_phase": "all_pairs")", BroadPhaseKind::all_pairs},
                           {R"("broad_phase": "grid")", BroadPhaseKind::grid},
@@ -183,8 +186,7 @@ TEST_CASE("broad phase choice: a pair found apart whose shapes no resolution has
         page.core.add(engine::Circle({316.0, 100.0}, 5));
         page.steps(1);
         const engine::PairStatistics& pairs = page.core.physics().pairStatistics();
-        INFO((kind == BroadPhaseKind::grid ? "grid" : "bounding_circle") << ": " << pairs.candidates
-             << " candidates");
+        INFO((kind == BroadPhaseKind::grid ? "grid" : "bounding_circle") << ": " << pairs.candidates << " candidates");
         CHECK(pairs.passes == 15);
         CHECK(pairs.narrow_tests == 2 + 14);
         CHECK(pairs.skipped_tests == 14);
@@ -370,7 +372,8 @@ TEST_CASE("broad phase choice: the grid hands on far fewer pairs than testing th
     std::vector<BodyDescription> bodies;
     for (int i = 0; i < kCount; ++i) {
         BodyDescription body;
-        body.center = {20 + 20.0 * (i % kSide) + random.uniform(-3, 3), 20 + 20.0 * (i / kSide) + random.uniform(-3, 3)};
+        body.center = {20 + 20.0 * (i % kSide) + random.uniform(-3, 3),
+                       20 + 20.0 * (i / kSide) + random.uniform(-3, 3)};
         if (i % 2 == 0) {
             body.shape = ShapeKind::circle;
             body.radius = random.uniform(4, 7);
@@ -408,6 +411,5 @@ TEST_CASE("broad phase choice: the grid hands on far fewer pairs than testing th
         CHECK(grid.pairStatistics().candidates * 20 < every_pair);
     }
 }
-
 
 }  // namespace broad_phase_choice_test

@@ -27,9 +27,9 @@ constexpr double kRadiusMin = 20, kRadiusMax = 30;
 
 struct BroadPhaseCount {
     int pairs = 0;
-    int bound_overlaps = 0;    // pairs the broad phase reports
-    int false_positives = 0;   // ... of which the shapes do not touch
-    int missed = 0;            // pairs that touch but the broad phase left out: must stay 0
+    int bound_overlaps = 0;   // pairs the broad phase reports
+    int false_positives = 0;  // ... of which the shapes do not touch
+    int missed = 0;           // pairs that touch but the broad phase left out: must stay 0
     double falsePositiveShare() const { return static_cast<double>(false_positives) / bound_overlaps; }
 };
 
@@ -140,8 +140,8 @@ TEST_CASE("broad phase: never misses a touching pair; its false-positive share, 
         REQUIRE(count->bound_overlaps > 0);
         WARN((count == &spawned ? "F/G-like scenes" : "mixed-size scenes")
              << ": " << count->pairs << " pairs, the broad phase passes " << count->bound_overlaps << ", of which "
-             << count->false_positives << " do not touch: false-positive share "
-             << 100.0 * count->falsePositiveShare() << " %");
+             << count->false_positives << " do not touch: false-positive share " << 100.0 * count->falsePositiveShare()
+             << " %");
     }
 }
 

@@ -194,7 +194,8 @@ TEST_CASE("collision impulse: a box resting on a static floor stays put for 10,0
     WARN("resting box: drifted at most " << drift << " px and turned at most " << turn << " rad in 10,000 steps");
 }
 
-TEST_CASE("collision impulse: 10,000 steps of the book's scene with shapes everywhere end finite, on the canvas, at rest") {
+TEST_CASE(
+    "collision impulse: 10,000 steps of the book's scene with shapes everywhere end finite, on the canvas, at rest") {
     // Twelve shapes made across the canvas in three rows (inside the chapter 4 borders),
     // kicked at up to 250 px/s by H, then 10,000 steps (167 s). Every number stays finite;
     // every shape stays on the canvas (chapter 4's borders hold them; the demo removes
@@ -219,7 +220,8 @@ TEST_CASE("collision impulse: 10,000 steps of the book's scene with shapes every
     double most_energy = 0;
     for (int step = 1; step <= 10'000; ++step) {
         page.steps(1);
-        if (const auto bad = test::firstNotFinite(page.core)) FAIL("step " << step << ": shape " << *bad << " is not finite");
+        if (const auto bad = test::firstNotFinite(page.core))
+            FAIL("step " << step << ": shape " << *bad << " is not finite");
         most_energy = std::max(most_energy, test::kineticEnergy(page.core));
     }
     REQUIRE(most_energy > 0);

@@ -53,9 +53,8 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
     CHECK(pixels.at(213, 100) == test::legendColor(document, "normal"));
     // It ends at x = 230.5: two pixels on, the row is white.
     CHECK(pixels.at(232, 100) == browser::colors::kWhite);
-    const auto counted = std::find_if(document.legend.begin(), document.legend.end(), [](const auto& entry) {
-        return entry.text == "colliding pairs: 1";
-    });
+    const auto counted = std::find_if(document.legend.begin(), document.legend.end(),
+                                      [](const auto& entry) { return entry.text == "colliding pairs: 1"; });
     CHECK(counted != document.legend.end());
 }
 

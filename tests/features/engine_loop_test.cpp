@@ -17,6 +17,8 @@ constexpr double kExact = 1e-9;  // ms
 TEST_CASE("engine loop: updates per frame and carried lag for mixed frame lengths") {
     engine::FixedStepTimer timer(0.0);
     double now = 0.0;
+    // A table, a frame a line, which the layout would pack:
+    // clang-format off
     struct Frame { double length_ms; int updates; double lag_ms; };
     const Frame frames[] = {
         // 1000/60 has no exact binary form: the step is a hair above 50/3 ms, and three
@@ -30,6 +32,7 @@ TEST_CASE("engine loop: updates per frame and carried lag for mixed frame length
         {5.0, 1, 70.0 - 4 * kStep},                  // 3.33 ms carried
         {1000.0, 60, 1070.0 - 64 * kStep},           // a 1 s stall: 1003.33 ms owes 60 steps
     };
+    // clang-format on
     for (const Frame& frame : frames) {
         now += frame.length_ms;
         CHECK(timer.updatesDue(now) == frame.updates);

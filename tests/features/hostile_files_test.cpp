@@ -29,8 +29,10 @@ const std::string kQuickRun = "--frames 1 --every 0 --no-gif --keys ''";
 // A scene of `count` circles all on one point, solved by 5.4's sequential impulses with
 // one velocity iteration: every pair in contact, the most contact memory per shape.
 std::string pileOfCircles(int count) {
-    std::string text = R"({"world": {"solver": "sequential_impulse", "velocity_iterations": 1, "position_iterations": 0}, "bodies": [)";
-    for (int i = 0; i < count; ++i) text.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [400, 200], "radius": 5})");
+    std::string text =
+        R"({"world": {"solver": "sequential_impulse", "velocity_iterations": 1, "position_iterations": 0}, "bodies": [)";
+    for (int i = 0; i < count; ++i)
+        text.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [400, 200], "radius": 5})");
     return text + "]}";
 }
 
@@ -105,7 +107,8 @@ TEST_CASE("hostile files: a dump named like a picture of the run, or around the 
     test::checkRefused(folder, kQuickRun + " --dump " + test::quoted(out / "sub" / "dump.csv") + outAt(out),
                        "a dump inside the --out folder goes directly into it");
     // The dump holds the --out folder: refused before a picture is written.
-    test::checkRefused(folder, kQuickRun + " --dump " + test::quoted(folder.path / "o") + outAt(folder.path / "o" / "p"),
+    test::checkRefused(folder,
+                       kQuickRun + " --dump " + test::quoted(folder.path / "o") + outAt(folder.path / "o" / "p"),
                        "it is the --out folder or holds it");
 }
 
@@ -113,14 +116,16 @@ TEST_CASE("hostile files: --dump never replaces a file the run reads or a file w
     const test::ScratchFolder folder("hostile2-dump-inputs");
     const std::string scene = R"({"bodies": []})";
     const fs::path scene_file = folder.write("scene.json", scene);
-    test::checkRefused(folder, kQuickRun + " --scene " + test::quoted(scene_file) + " --dump " + test::quoted(scene_file) +
-                                   outAt(folder.path / "out"),
+    test::checkRefused(folder,
+                       kQuickRun + " --scene " + test::quoted(scene_file) + " --dump " + test::quoted(scene_file) +
+                           outAt(folder.path / "out"),
                        "which the run reads");
     CHECK(test::readText(scene_file) == scene);
 
     const fs::path data = folder.write("data.csv", "someone's data\n");
     fs::create_hard_link(data, folder.path / "second.csv");
-    test::checkRefused(folder, kQuickRun + " --dump " + test::quoted(folder.path / "second.csv") + outAt(folder.path / "out"),
+    test::checkRefused(folder,
+                       kQuickRun + " --dump " + test::quoted(folder.path / "second.csv") + outAt(folder.path / "out"),
                        "it is a file with 2 names (hard links)");
     CHECK(test::readText(data) == "someone's data\n");
 }
@@ -131,7 +136,8 @@ TEST_CASE("hostile files: --out and --dump fail alike however long the name") {
         INFO(length);
         const std::string name(length, 'a');
         test::checkRefused(folder, kQuickRun + outAt(folder.path / name), "bytes, more than the 231 a run can write");
-        test::checkRefused(folder, kQuickRun + " --dump " + test::quoted(folder.path / name) + outAt(folder.path / "out"),
+        test::checkRefused(folder,
+                           kQuickRun + " --dump " + test::quoted(folder.path / name) + outAt(folder.path / "out"),
                            "bytes, more than the 231 a run can write");
     }
 }
@@ -142,7 +148,8 @@ TEST_CASE("hostile input: a NUL byte, a key a megabyte long and a parser's compl
         return kQuickRun + " --scene " + test::quoted(folder.path / name) + outAt(folder.path / "out");
     };
     folder.write("nul.json", std::string(R"({"bodies": []})") + '\0' + R"({"bodies": [{"shape": "nothing"}]})");
-    test::checkRefused(folder, scene("nul.json"), "nul.json: line 1, column 15: a NUL byte, which a scene file never holds");
+    test::checkRefused(folder, scene("nul.json"),
+                       "nul.json: line 1, column 15: a NUL byte, which a scene file never holds");
 
     folder.write("key.json", "{\"" + std::string(1'000'000, 'k') + "\": 1}");
     const test::ProgramRun key = test::runStageProgram(folder, scene("key.json"));
@@ -156,7 +163,8 @@ TEST_CASE("hostile input: a NUL byte, a key a megabyte long and a parser's compl
     const test::ProgramRun parse = test::runStageProgram(folder, scene("break.json"));
     CHECK(parse.status == 2);
     CHECK(test::isOneLine(parse.error_text));
-    CHECK_THAT(parse.error_text, Catch::Contains("control character U+000A (LF) must be escaped to \\\\u000A or \\\\n"));
+    CHECK_THAT(parse.error_text,
+               Catch::Contains("control character U+000A (LF) must be escaped to \\\\u000A or \\\\n"));
     CHECK_THAT(parse.error_text, !Catch::Contains("last read"));
 }
 
@@ -187,7 +195,8 @@ TEST_CASE("hostile input: 5.4's contacts are in the budget, and running out of m
                outAt(folder.path / "out");
     };
     // The issue's case: 2,500 circles on one point took 1.8 GB in one frame.
-    test::checkRefused(folder, scene("pile2500.json", ""), "up to 2500 shapes all in contact may hold 4061 MB of contacts");
+    test::checkRefused(folder, scene("pile2500.json", ""),
+                       "up to 2500 shapes all in contact may hold 4061 MB of contacts");
     // At the edge: 785 x 784 / 2 pairs x 1,300 bytes = 400.1 MB, one shape less 399.1 MB.
     test::checkRefused(folder, scene("pile785.json", ""), "up to 785 shapes all in contact may hold 400 MB");
     test::checkRefused(folder, scene("pile784.json", "0 g"), "up to 785 shapes all in contact");

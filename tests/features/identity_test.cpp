@@ -49,9 +49,9 @@ private:
 
 std::uint64_t fingerprint(const engine::Scene& scene) {
     const engine::WorldSettings& world = scene.world;
-    browser::Window window(world.dt * 1000.0, browser::Document{browser::Canvas(
-                                                  static_cast<int>(std::ceil(world.width)),
-                                                  static_cast<int>(std::ceil(world.height)))});
+    browser::Window window(world.dt * 1000.0,
+                           browser::Document{browser::Canvas(static_cast<int>(std::ceil(world.width)),
+                                                             static_cast<int>(std::ceil(world.height)))});
     engine::Core core(window, world);
     engine::buildScene(core, scene.bodies);
     Fingerprint print;

@@ -23,7 +23,7 @@ using engine::Vec2;
 namespace {
 constexpr double kDt = 1.0 / 60.0;
 constexpr double kG = engine::kGravity.y;  // the book's gravity, px/s^2 down (10 in chapter 4, 20 in the demo)
-constexpr double kExact = 1e-9;     // px: positions a few hundred px, a few hundred steps
+constexpr double kExact = 1e-9;            // px: positions a few hundred px, a few hundred steps
 }  // namespace
 
 TEST_CASE("movement: free fall follows the symplectic Euler closed form") {
@@ -93,8 +93,8 @@ TEST_CASE("movement: why symplectic: on a spring the engine's step keeps the ene
         worst = std::max(worst, std::abs(energy() / start - 1));
     }
     WARN("spring, symplectic Euler: energy within " << worst << " of the start over 600 steps (w dt = " << w * kDt
-                                                     << "; explicit Euler: x" << std::pow(1 + w * w * kDt * kDt, 600)
-                                                     << ")");
+                                                    << "; explicit Euler: x" << std::pow(1 + w * w * kDt * kDt, 600)
+                                                    << ")");
     CHECK(worst < w * kDt);
     CHECK(worst > w * kDt / 4);  // it does wobble: the spring really ran
 }
@@ -345,7 +345,7 @@ TEST_CASE("movement: F and G spawn with mass 0..30, friction and restitution 0..
         heaviest = std::max(heaviest, shape.mass());
         fastest = std::max({fastest, std::abs(shape.velocity().x), std::abs(shape.velocity().y)});
     }
-    CHECK(heaviest > 20);  // 100 draws, none above 20: odds (2/3)^100
+    CHECK(heaviest > 20);          // 100 draws, none above 20: odds (2/3)^100
     CHECK(fastest >= kFling / 2);  // 200 uniform draws, all below half: odds 2^-200
 }
 

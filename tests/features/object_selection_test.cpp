@@ -56,9 +56,9 @@ TEST_CASE("object selection: every key on an empty world leaves it empty, and th
     // The keys that act on the selected object must not reach for object 0 when there
     // is none (core.object() would throw), nor make one.
     test::StageFixture page;
-    for (Key key : {Key::Digit0, Key::Digit5, Key::Up, Key::Down, Key::W, Key::A, Key::S, Key::D, Key::Q,
-                    Key::E, Key::H, Key::R, Key::Comma, Key::M, Key::I, Key::U, Key::Z, Key::X, Key::C, Key::V,
-                    Key::B, Key::N}) {
+    for (Key key :
+         {Key::Digit0, Key::Digit5, Key::Up, Key::Down, Key::W, Key::A, Key::S, Key::D, Key::Q, Key::E, Key::H,
+          Key::R,      Key::Comma,  Key::M,  Key::I,    Key::U, Key::Z, Key::X, Key::C, Key::V, Key::B, Key::N}) {
         page.press(key);
         CHECK(page.core.objectCount() == 0);
         CHECK(page.core.selectedIndex() == 0);

@@ -48,7 +48,10 @@ std::vector<Vec2> centres(const engine::Core& core) {
 TEST_CASE("out of bounds: past each of the four edges a shape is removed; on the edge it stays") {
     // Movement off: nothing moves, so each step removes exactly the shapes placed off the
     // canvas. A quarter of a pixel past an edge is off it; exactly on it is not.
-    struct Edge { const char* name; Vec2 on, past; };
+    struct Edge {
+        const char* name;
+        Vec2 on, past;
+    };
     const Edge edges[] = {
         {"left", {0, 100}, {-0.25, 200}},
         {"right", {kWidth, 100}, {kWidth + 0.25, 200}},
@@ -104,7 +107,11 @@ TEST_CASE("out of bounds: a shape is removed at the end of the step that takes i
 TEST_CASE("out of bounds: the selection stays on its index, and goes back to object 0 once past the end") {
     // The book's selection is an index (gObjectNum); a removal moves the shapes after it
     // down the list. An index left past the end would select nothing: it becomes 0.
-    struct Case { std::size_t selected; std::size_t removed; std::size_t then_selected; };
+    struct Case {
+        std::size_t selected;
+        std::size_t removed;
+        std::size_t then_selected;
+    };
     const Case cases[] = {{0, 2, 0}, {1, 2, 1}, {2, 2, 0}, {2, 0, 0}, {1, 0, 1}};
     for (const Case& c : cases) {
         INFO("object " << c.selected << " selected, object " << c.removed << " removed");

@@ -16,7 +16,8 @@ namespace {
 // final.png of a two-frame run of the stage's program with `arguments`.
 browser::Image finalPicture(const test::ScratchFolder& folder, const std::string& name, const std::string& arguments) {
     const std::filesystem::path out = folder.path / name;
-    const test::ProgramRun run = test::runStageProgram(folder, "--frames 2 --out " + test::quoted(out) + " " + arguments);
+    const test::ProgramRun run =
+        test::runStageProgram(folder, "--frames 2 --out " + test::quoted(out) + " " + arguments);
     REQUIRE(run.status == 0);
     return browser::read_png(out / "final.png");
 }

@@ -70,13 +70,16 @@ TEST_CASE("positional correction: each pass removes correction_rate of what is l
     // that, the light circle taking 3/4 of the move and the heavy one 1/4; so one step of
     // P passes leaves d (1 - rate)^P, and the last pass found d (1 - rate)^(P - 1). No
     // pass (P = 0) or a rate of 0 moves nothing; a rate of 1 parts them in the first pass.
-    struct Case { double rate; int passes; };
+    struct Case {
+        double rate;
+        int passes;
+    };
     const Case cases[] = {{0.8, 15}, {0.8, 1}, {0.8, 3}, {0.5, 15}, {0.5, 2}, {0.3, 7}, {1.0, 4}, {0.0, 15}, {0.8, 0}};
     for (const Case& c : cases) {
         INFO("correction_rate " << c.rate << ", relaxation_iterations " << c.passes);
-        const engine::WorldSettings world = test::worldFromScene(
-            R"({"movement": false, "correction_rate": )" + std::to_string(c.rate) + R"(, "relaxation_iterations": )" +
-            std::to_string(c.passes) + "}");
+        const engine::WorldSettings world =
+            test::worldFromScene(R"({"movement": false, "correction_rate": )" + std::to_string(c.rate) +
+                                 R"(, "relaxation_iterations": )" + std::to_string(c.passes) + "}");
         REQUIRE(world.correction_rate == c.rate);
         REQUIRE(world.relaxation_iterations == c.passes);
         test::WorldFixture page(world);
@@ -106,9 +109,9 @@ TEST_CASE("positional correction: a scene file's correction_rate is a share, its
         INFO(accepted);
         CHECK_NOTHROW(test::worldFromScene(std::string("{") + accepted + "}"));
     }
-    for (const char* refused : {R"("correction_rate": -0.1)", R"("correction_rate": 1.5)",
-                                R"("relaxation_iterations": -1)", R"("relaxation_iterations": 2.5)",
-                                R"("relaxation_iterations": 1001)"}) {
+    for (const char* refused :
+         {R"("correction_rate": -0.1)", R"("correction_rate": 1.5)", R"("relaxation_iterations": -1)",
+          R"("relaxation_iterations": 2.5)", R"("relaxation_iterations": 1001)"}) {
         INFO(refused);
         CHECK_THROWS_AS(test::worldFromScene(std::string("{") + refused + "}"), browser::SceneError);
     }
@@ -119,8 +122,8 @@ TEST_CASE("positional correction: the scene file's positional_correction: false 
     // off (the M key's flag), so the pair stays 5 px deep.
     for (const bool on : {true, false}) {
         INFO("positional_correction " << on);
-        const engine::WorldSettings world =
-            test::worldFromScene(on ? R"({"movement": false})" : R"({"movement": false, "positional_correction": false})");
+        const engine::WorldSettings world = test::worldFromScene(
+            on ? R"({"movement": false})" : R"({"movement": false, "positional_correction": false})");
         REQUIRE(world.positional_correction == on);
         test::WorldFixture page(world);
         engine::Circle& a = page.core.add(engine::Circle({100, 100}, 10));

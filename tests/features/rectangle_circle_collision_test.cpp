@@ -154,8 +154,9 @@ TEST_CASE("rectangle circle collision: the broad phase never drops a pair the na
     CHECK(dropped == 0);
 }
 
-TEST_CASE("rectangle circle collision: a rectangle thinner than the spacing of doubles has no side normals "
-          "(pinned, found by fuzz/)") {
+TEST_CASE(
+    "rectangle circle collision: a rectangle thinner than the spacing of doubles has no side normals "
+    "(pinned, found by fuzz/)") {
     // 1e-14 px wide about x = 400.5, where doubles lie 2^-44 = 5.7e-14 apart: both
     // sides round to x = 400.5, each side's normal is the zero vector, and a circle
     // beside it is "inside", behind a face 0 px away. The collision has depth = radius

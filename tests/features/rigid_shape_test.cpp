@@ -12,9 +12,7 @@ namespace rigid_shape_test {
 using engine::Vec2;
 
 namespace {
-void requireNear(Vec2 actual, Vec2 expected) {
-    CHECK_THAT(actual, test::near(expected, 1e-12));
-}
+void requireNear(Vec2 actual, Vec2 expected) { CHECK_THAT(actual, test::near(expected, 1e-12)); }
 }  // namespace
 
 TEST_CASE("rigid shape: a rectangle's corners run clockwise on screen from the top-left") {

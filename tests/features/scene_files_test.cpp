@@ -100,6 +100,8 @@ const std::map<std::string, std::string> kEveryWorldKey{
 
 // The keys each stage reads, as docs/scene_format.md tables them: the book's settings
 // arrive with the project that introduces them, the knobs with their own stage.
+// A table, a stage a line, which the layout would spread to one key a line:
+// clang-format off
 const std::map<std::string, std::vector<std::string>> kKeysOfStage{
     {"s4_1", {"width", "height", "gravity", "dt", "movement"}},
     {"s4_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
@@ -130,6 +132,7 @@ const std::map<std::string, std::vector<std::string>> kKeysOfStage{
               "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
               "sleep_speed", "time_to_sleep", "continuous"}},
 };
+// clang-format on
 
 std::string commaList(const std::vector<std::string>& words) {
     std::string list;
@@ -153,7 +156,8 @@ TEST_CASE("scene files: the stage reads exactly the world keys of its book proje
 
 TEST_CASE("scene files: a body's \"bullet\" is read from 5.6 on and refused before, as any unknown key") {
     const test::ScratchFolder folder("scene-bullet");
-    folder.write("scene.json", R"({"bodies": [{"shape": "circle", "center": [100, 100], "radius": 5, "bullet": true}]})");
+    folder.write("scene.json",
+                 R"({"bodies": [{"shape": "circle", "center": [100, 100], "radius": 5, "bullet": true}]})");
     const test::ProgramRun run = test::runStageProgram(folder, arguments(folder, "scene.json", "--frames 1"));
 #if __has_include("continuous.h")
     CHECK(run.status == 0);
@@ -225,7 +229,10 @@ TEST_CASE("scene files: step 0 of the dump gives back every number of the scene 
     REQUIRE(run.status == 0);
     const auto rows = rowsOfStep(test::readDump(folder.path / "dump.csv"), 0);
     REQUIRE(rows.size() == 3);
-    struct Expected { const char* shape; double cx, cy, angle, vx, vy, w; };
+    struct Expected {
+        const char* shape;
+        double cx, cy, angle, vx, vy, w;
+    };
     const Expected expected[] = {
         {"rectangle", 500.25, 200.1, 2.8, 0, 0, 0},
         {"circle", 100.5, 50.75, 0, 10.5, -3.25, -0.7},
@@ -333,12 +340,15 @@ TEST_CASE("scene files: without --scene the dump starts from the book's scene") 
 }
 
 TEST_CASE("scene files: a refused scene exits with 2 and one line, and writes nothing") {
-    struct Case { const char* name; const char* text; const char* says; };
+    struct Case {
+        const char* name;
+        const char* text;
+        const char* says;
+    };
     const Case cases[] = {
         {"not JSON", R"({"bodies": [)", "malformed JSON"},
         {"a typo", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radus": 3}]})", "bodies[0].radus"},
-        {"a negative size", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radius": -2}]})",
-         "bodies[0].radius"},
+        {"a negative size", R"({"bodies": [{"shape": "circle", "center": [1, 2], "radius": -2}]})", "bodies[0].radius"},
         {"a bad world", R"({"world": {"dt": 0}})", "world.dt"},
     };
     for (const Case& bad : cases) {
@@ -399,7 +409,8 @@ TEST_CASE("hostile input: a scene that is a FIFO, a device, a folder or a loop o
     fs::create_symlink(folder.path / "loop2", folder.path / "loop1");
     fs::create_symlink(folder.path / "loop1", folder.path / "loop2");
     const auto scene = [&](const std::string& file) { return "--frames 1 --scene " + file + outIn(folder); };
-    checkRefused(folder, scene(test::quoted(folder.path / "fifo")), "fifo: cannot read: it is a FIFO, not a regular file");
+    checkRefused(folder, scene(test::quoted(folder.path / "fifo")),
+                 "fifo: cannot read: it is a FIFO, not a regular file");
     checkRefused(folder, scene("/dev/zero"), "/dev/zero: cannot read: it is a device, not a regular file");
     checkRefused(folder, scene("/dev/urandom"), "/dev/urandom: cannot read: it is a device, not a regular file");
     checkRefused(folder, scene(test::quoted(folder.path)), "cannot read: it is a folder");
@@ -410,7 +421,10 @@ TEST_CASE("hostile input: a scene that is a FIFO, a device, a folder or a loop o
 TEST_CASE("hostile input: a scene whose numbers would make a NaN is refused when it loads") {
     // Each once gave a dump of NaN from step 1: a radius whose inertia underflows to 0,
     // circles meeting at 1e308 px/s, a circle of radius 1e300 onto a rectangle.
-    struct Case { const char* bodies; const char* says; };
+    struct Case {
+        const char* bodies;
+        const char* says;
+    };
     const Case cases[] = {
         {R"({"shape": "circle", "center": [100, 100], "radius": 1e-155},
             {"shape": "circle", "center": [100, 100], "radius": 10})",
@@ -468,7 +482,8 @@ TEST_CASE("hostile input: --dump inside the --out folder is written there, run a
 TEST_CASE("hostile input: every run is bounded: shapes, presses, pictures and the work of the whole run") {
     const test::ScratchFolder folder("hostile-bounds");
     std::string many = R"({"bodies": [)";
-    for (int i = 0; i <= 2500; ++i) many.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [400, 200], "radius": 5})");
+    for (int i = 0; i <= 2500; ++i)
+        many.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [400, 200], "radius": 5})");
     folder.write("many.json", many + "]}");
     checkRefused(folder, arguments(folder, "many.json", "--frames 1"), "bodies: more than 2500 bodies (got 2501)");
     checkRefused(folder, "--frames 1 --keys 'f*2000 g'" + outIn(folder), "more than 2000 keys in all");
@@ -477,7 +492,8 @@ TEST_CASE("hostile input: every run is bounded: shapes, presses, pictures and th
     // pass a step (4.1), 9e10 with the book's 15.
     checkRefused(folder, "--frames 3000 --every 0 --no-gif --keys 'f*2000'" + outIn(folder),
                  "the run is too long: 3000 frames");
-    checkRefused(folder, "--frames 10000000 --every 0 --no-gif --keys ''" + outIn(folder), "the run is too long: 10000000 frames");
+    checkRefused(folder, "--frames 10000000 --every 0 --no-gif --keys ''" + outIn(folder),
+                 "the run is too long: 10000000 frames");
 }
 
 TEST_CASE("hostile input: what the reader typed is quoted escaped, so every refusal is one line") {
@@ -498,7 +514,8 @@ TEST_CASE("hostile input: --out problems are refusals too: status 2, one line") 
     const test::ScratchFolder folder("hostile-out");
     fs::create_directories(folder.path / "thesis");
     std::ofstream(folder.path / "thesis" / "chapter1.txt") << "years of work\n";
-    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "thesis"), "it holds \"chapter1.txt\", which no run wrote");
+    checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "thesis"),
+                 "it holds \"chapter1.txt\", which no run wrote");
     std::ofstream(folder.path / "file") << "x";
     checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file"), "it exists and is not a folder");
     checkRefused(folder, "--frames 1 --out " + test::quoted(folder.path / "file" / "out"), "cannot write pictures to");
@@ -550,7 +567,8 @@ TEST_CASE("hostile input: a step that leaves a number no double can be is named,
         engine::checkFinite(page.core);
         FAIL("checkFinite let a NaN through");
     } catch (const browser::NonFiniteState& error) {
-        CHECK(std::string(error.what()).rfind("step 1: body 0 (circle) has a position or velocity that is not a finite number", 0) == 0);
+        CHECK(std::string(error.what())
+                  .rfind("step 1: body 0 (circle) has a position or velocity that is not a finite number", 0) == 0);
     }
 }
 

@@ -44,8 +44,8 @@ const fs::path kLibrary{SCENE_LIBRARY_DIR};
 
 // Every scene of the folder, each with its own test case below. A new scene must be
 // added here, or the first test fails.
-const std::vector<std::string> kScenes{"billiards",      "book_demo", "heavy_on_light", "newtons_cradle",
-                                       "pyramid",        "rain",      "slope",          "tunnelling"};
+const std::vector<std::string> kScenes{"billiards", "book_demo", "heavy_on_light", "newtons_cradle",
+                                       "pyramid",   "rain",      "slope",          "tunnelling"};
 
 // 600 steps of 1/60 s: the 10 s the README's commands show. The rain (200 shapes, so
 // 19,900 pairs, 15 relaxation passes per step) is the costly one: about 1.3 s in Release.

@@ -117,8 +117,8 @@ TEST_CASE("stage keys: a key script pressing any other key is refused, nothing w
         INFO("key " << browser::key_name(key));
         test::ScratchFolder folder("stage_keys");
         const std::string out = (folder.path / "out").string();
-        const test::ProgramRun run =
-            test::runStageProgram(folder, "--frames 2 --out '" + out + "' --keys 'f@0 " + browser::key_name(key) + "@1'");
+        const test::ProgramRun run = test::runStageProgram(
+            folder, "--frames 2 --out '" + out + "' --keys 'f@0 " + browser::key_name(key) + "@1'");
         CHECK(run.status == 2);
         CHECK(run.error_text == std::string(STAGE_PROGRAM).substr(std::string(STAGE_PROGRAM).rfind('/') + 1) +
                                     ": --keys: \"" + browser::key_name(key) +

@@ -30,7 +30,8 @@ bool shows(const std::string& echo, const std::string& line) {
 
 TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitution, and the flags") {
     test::StageFixture page;
-    page.core.add(engine::Rectangle({100, 100}, 20, 20, {.mass = 0}));  // a static shape first, so the ball is not object 0
+    page.core.add(
+        engine::Rectangle({100, 100}, 20, 20, {.mass = 0}));  // a static shape first, so the ball is not object 0
     const std::size_t id = page.core.objectCount();
     const engine::PhysicalAttributes attributes{.mass = 2.5, .friction = 0.25, .restitution = 0.75};
     engine::Circle& ball = page.core.add(engine::Circle({700, 430}, 10, attributes));
@@ -64,11 +65,11 @@ TEST_CASE("ui echo: the mass is 1 over the inverse mass rounded to 3 digits, as 
         double mass;
         const char* shown;
     } cases[] = {
-        {7, "6.993006993006993"},  // 1 / 0.143
-        {5, "5"},                  // 1 / 0.200
-        {3, "3.003003003003003"},  // 1 / 0.333
+        {7, "6.993006993006993"},    // 1 / 0.143
+        {5, "5"},                    // 1 / 0.200
+        {3, "3.003003003003003"},    // 1 / 0.333
         {30, "30.030030030030026"},  // 1 / 0.0333
-        {0.5, "0.5"},              // 1 / 2.00
+        {0.5, "0.5"},                // 1 / 2.00
     };
     for (const auto& example : cases) {
         page.core.add(engine::Circle({300, 300}, 10, {.mass = example.mass}));

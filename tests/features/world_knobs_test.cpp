@@ -31,8 +31,8 @@ namespace fs = std::filesystem;
 using browser::BodyDescription;
 using browser::Key;
 using browser::ShapeKind;
-using engine::WorldSettings;
 using engine::Vec2;
+using engine::WorldSettings;
 
 namespace {
 
@@ -106,12 +106,13 @@ TEST_CASE("world knobs: the scene file's substeps and integrator, against the cl
     for (const int substeps : {1, 3}) {
         for (const char* integrator : {"symplectic", "explicit"}) {
             INFO(substeps << " sub-steps, " << integrator << " Euler");
-            const WorldSettings world = test::worldFromScene(
-                std::string(R"({"movement": true, "gravity": [0, 30], "substeps": )") + std::to_string(substeps) +
-                R"(, "integrator": ")" + integrator + "\"}");
+            const WorldSettings world =
+                test::worldFromScene(std::string(R"({"movement": true, "gravity": [0, 30], "substeps": )") +
+                                     std::to_string(substeps) + R"(, "integrator": ")" + integrator + "\"}");
             REQUIRE(world.substeps == substeps);
             const bool symplectic = std::string(integrator) == "symplectic";
-            REQUIRE(world.integrator == (symplectic ? engine::Integrator::symplectic : engine::Integrator::explicit_euler));
+            REQUIRE(world.integrator ==
+                    (symplectic ? engine::Integrator::symplectic : engine::Integrator::explicit_euler));
             test::WorldFixture page(world);
             engine::Circle& ball = page.core.add(engine::Circle({100, 100}, 5));
             page.steps(20);
@@ -137,7 +138,10 @@ TEST_CASE("world knobs: the scene file's friction_model, rotation and friction, 
     //   Coulomb: jT = min(40 / response, mu jN = 45):  40/3 with rotation, 40 without;
     //   then vx = 40 - jT and w = (r x t) jT / I = 0.2 jT with rotation.
     // friction: false leaves the slide alone.
-    struct Case { const char* knobs; double vx, w; };
+    struct Case {
+        const char* knobs;
+        double vx, w;
+    };
     const Case cases[] = {
         {"", 30, 2},
         {R"(, "rotation": false)", 10, 0},
@@ -152,7 +156,8 @@ TEST_CASE("world knobs: the scene file's friction_model, rotation and friction, 
             std::string(R"({"movement": false, "gravity": [0, 0], "positional_correction": false)") + c.knobs + "}");
         test::WorldFixture page(world);
         page.core.add(engine::Rectangle({100, 110}, 200, 20, {.mass = 0, .friction = 1, .restitution = 0.5}));
-        engine::Circle& ball = page.core.add(engine::Circle({100, 91}, 10, {.mass = 1, .friction = 0.5, .restitution = 0.5}));
+        engine::Circle& ball =
+            page.core.add(engine::Circle({100, 91}, 10, {.mass = 1, .friction = 0.5, .restitution = 0.5}));
         ball.setVelocity({40, 60});
         page.steps(1);
         // 1e-12: a handful of operations on numbers below 100.
@@ -318,8 +323,11 @@ TEST_CASE("world knobs: rotation off keeps every angle and angular velocity at e
     for (int i = 0; i < 12; ++i) {
         const Vec2 center{random.uniform(200, 600), random.uniform(20, 180)};
         if (i % 2 == 0) {
-            bodies.push_back({.shape = ShapeKind::rectangle, .center = center, .width = random.uniform(10, 40),
-                              .height = random.uniform(10, 40), .mass = random.uniform(1, 10)});
+            bodies.push_back({.shape = ShapeKind::rectangle,
+                              .center = center,
+                              .width = random.uniform(10, 40),
+                              .height = random.uniform(10, 40),
+                              .mass = random.uniform(1, 10)});
         } else {
             bodies.push_back({.shape = ShapeKind::circle, .center = center, .radius = random.uniform(5, 20)});
         }
@@ -550,9 +558,9 @@ TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as 
         "bodies": [{"shape": "circle", "center": [100, 100], "radius": 10},
                    {"shape": "circle", "center": [130, 100], "radius": 10},
                    {"shape": "circle", "center": [160, 100], "radius": 10}]})");
-    const test::ProgramRun run = test::runStageProgram(
-        folder, "--frames 1 --keys '' --scene " + test::quoted(folder.path / "scene.json") + " --out " +
-                    test::quoted(folder.path / "out"));
+    const test::ProgramRun run =
+        test::runStageProgram(folder, "--frames 1 --keys '' --scene " + test::quoted(folder.path / "scene.json") +
+                                          " --out " + test::quoted(folder.path / "out"));
     CHECK(run.status == 2);
     // 1,667 steps x 1000 sub-steps x (1000 x 3 pairs + 3 moves) = 5.006e9 pair tests.
     CHECK(run.error_text ==

@@ -90,8 +90,9 @@ TEST_CASE("live program: a session's recorded script replays to the last page th
     // paused at refresh 3; d waits and goes in with the step at 5 (frame 3); the next d
     // waits until Space goes on at 8 (frame 4); h and comma before frames 5 and 6.
     folder.write("events.txt", "F@1 G@1 P@2 Space@3 D@4 .@5 D@6 Space@8 H@9 ,@10 Escape@12\n");
-    const Run live = run_in(folder, program() + " --live --record session.keys --live-events events.txt"
-                                                " --live-screenshot shown.png --seed 5");
+    const Run live = run_in(folder, program() +
+                                        " --live --record session.keys --live-events events.txt"
+                                        " --live-screenshot shown.png --seed 5");
     INFO(live.err);
     REQUIRE(live.status == 0);
     CHECK(live.err.empty());
@@ -105,7 +106,8 @@ TEST_CASE("live program: a session's recorded script replays to the last page th
                               " with:\n  ";
     REQUIRE(live.out.rfind(intro, 0) == 0);
     const std::string command = live.out.substr(intro.size(), live.out.size() - intro.size() - 1);
-    CHECK(command == std::string(LIVE_PROGRAM) + " --seed 5 --keys \"$(cat session.keys)\" --frames 8 --from 1 --every 30" +
+    CHECK(command == std::string(LIVE_PROGRAM) +
+                         " --seed 5 --keys \"$(cat session.keys)\" --frames 8 --from 1 --every 30" +
                          (browser::gif_supported() ? " --gif" : ""));
     const Run replay = run_in(folder, command);
     REQUIRE(replay.status == 0);
@@ -129,7 +131,8 @@ TEST_CASE("live program: F12 saves the page shown, which the replay draws as tha
     INFO(live.err);
     REQUIRE(live.status == 0);
     CHECK(live.err.empty());
-    CHECK_THAT(live.out, Catch::StartsWith("F12: saved frame 2 to s4_4_frame_0002.png\nrecorded 1 key press in 3 frames"));
+    CHECK_THAT(live.out,
+               Catch::StartsWith("F12: saved frame 2 to s4_4_frame_0002.png\nrecorded 1 key press in 3 frames"));
     CHECK(folder.files() == std::vector<std::string>{"events.txt", "s4_4_frame_0002.png", "session.keys"});
     const std::size_t indent = live.out.find("\n  ");
     REQUIRE(indent != std::string::npos);
@@ -168,13 +171,13 @@ TEST_CASE("live program: --record never replaces a link, a FIFO, a device, a sec
     fs::create_symlink("target.txt", folder.path / "link");
     fs::create_hard_link(folder.path / "target.txt", folder.path / "second.txt");
     REQUIRE(::mkfifo((folder.path / "fifo").c_str(), 0600) == 0);
-    struct Case { std::string record, says; };
-    const Case cases[] = {{"link", "it is a symbolic link"},
-                          {"fifo", "it is a FIFO"},
-                          {"/dev/null", "it is a device"},
-                          {"second.txt", "it is a file with 2 names (hard links)"},
-                          {"events.txt", "which the run reads"},
-                          {".", "it is the current folder or holds it"}};
+    struct Case {
+        std::string record, says;
+    };
+    const Case cases[] = {
+        {"link", "it is a symbolic link"},     {"fifo", "it is a FIFO"},
+        {"/dev/null", "it is a device"},       {"second.txt", "it is a file with 2 names (hard links)"},
+        {"events.txt", "which the run reads"}, {".", "it is the current folder or holds it"}};
     for (const Case& bad : cases) {
         INFO(bad.record);
         const Run live = run_in(folder, program() + " --live --live-events events.txt --record " + bad.record);
@@ -192,10 +195,12 @@ TEST_CASE("live program: --record never replaces a link, a FIFO, a device, a sec
 TEST_CASE("live program: with no display named, --live is one line and status 1, at once") {
     ScratchFolder folder("live_program");
     // run_in names SDL's dummy driver; env takes it away again, with any display.
-    const Run live = run_in(folder, "timeout 20 env -u SDL_VIDEODRIVER -u DISPLAY -u WAYLAND_DISPLAY " + program() + " --live");
+    const Run live =
+        run_in(folder, "timeout 20 env -u SDL_VIDEODRIVER -u DISPLAY -u WAYLAND_DISPLAY " + program() + " --live");
     CHECK(live.status == 1);
-    CHECK(live.err == "--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
-                      "SDL_VIDEODRIVER names a driver explicitly)\n");
+    CHECK(live.err ==
+          "--live: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset; "
+          "SDL_VIDEODRIVER names a driver explicitly)\n");
     CHECK(folder.files().empty());
 }
 
@@ -205,7 +210,8 @@ TEST_CASE("live program: SIGINT and SIGTERM end a live session as they end a run
     // the program did: 128 + the signal when the signal ended it.
     for (const auto& [signal, status] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
         INFO(signal);
-        const Run live = run_in(folder, std::string("timeout --preserve-status -s ") + signal + " 1 " + program() + " --live");
+        const Run live =
+            run_in(folder, std::string("timeout --preserve-status -s ") + signal + " 1 " + program() + " --live");
         CHECK(live.status == status);
         CHECK(live.out.empty());
     }

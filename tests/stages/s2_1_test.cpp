@@ -63,7 +63,7 @@ TEST_CASE("s2_1: the selected object is red, the others blue, and the echo names
     const browser::Image& pixels = page.window.document.canvas.pixels();
     CHECK(pixels.at(280, 100).r > 200);  // red
     CHECK(pixels.at(280, 100).b < 60);
-    CHECK(pixels.at(80, 100).b > 200);   // blue
+    CHECK(pixels.at(80, 100).b > 200);  // blue
     CHECK(pixels.at(80, 100).r < 60);
     CHECK(page.window.document.ui_echo.find("Id: 1") != std::string::npos);
     CHECK(page.window.document.ui_echo.find("Center: 301,100") != std::string::npos);

@@ -52,7 +52,7 @@ TEST_CASE("s2_2: a 50 ms frame runs two updates, then draws the result once") {
     CHECK(page.window.document.ui_echo.find("Center: 100,102") != std::string::npos);
     // The drawing shows the circle after the two updates: its lowest point is at y = 122.
     const browser::Image& pixels = page.window.document.canvas.pixels();
-    CHECK(pixels.at(100, 121).r > 128);  // selected (object 0), so red
+    CHECK(pixels.at(100, 121).r > 128);                    // selected (object 0), so red
     CHECK(pixels.at(100, 80) == browser::colors::kWhite);  // its old top, y = 80, is clear
 }
 

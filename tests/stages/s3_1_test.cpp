@@ -116,9 +116,9 @@ TEST_CASE("s3_1: the overlay joins each pair the broad phase passed, and rings e
     // Two circles of radius 15 whose centres are 25 apart (25 <= 30: they pass), on the
     // row of pixel centres y = 100.5; a 30 x 40 rectangle alone, bounding radius
     // sqrt(15^2 + 20^2) = 25.
-    page.core.add(engine::Circle({100.5, 100.5}, 15));       // 5
-    page.core.add(engine::Circle({125.5, 100.5}, 15));       // 6
-    page.core.add(engine::Rectangle({300.5, 300.5}, 30, 40)); // 7
+    page.core.add(engine::Circle({100.5, 100.5}, 15));         // 5
+    page.core.add(engine::Circle({125.5, 100.5}, 15));         // 6
+    page.core.add(engine::Rectangle({300.5, 300.5}, 30, 40));  // 7
     page.frame();
     const browser::Image& off = page.window.document.canvas.pixels();
     CHECK(off.at(103, 100) == browser::colors::kWhite);  // off by default: the book's picture

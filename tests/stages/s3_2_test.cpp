@@ -26,8 +26,8 @@ TEST_CASE("s3_2: rectangles report no collision yet, with rectangles or circles"
 
 TEST_CASE("s3_2: the pass starts at object 0 and keeps each normal from first to second") {
     test::StageFixture page;
-    page.core.add(engine::Circle({130, 100}, 20));  // 0
-    page.core.add(engine::Circle({100, 100}, 20));  // 1: overlaps 0 by 10
+    page.core.add(engine::Circle({130, 100}, 20));         // 0
+    page.core.add(engine::Circle({100, 100}, 20));         // 1: overlaps 0 by 10
     page.core.add(engine::Rectangle({115, 100}, 50, 50));  // 2: over both, but a rectangle
     page.frame();
     const auto& found = page.core.physics().collisions();

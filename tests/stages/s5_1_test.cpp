@@ -40,7 +40,10 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
     test::buildBookScene(page.core, page.random);
     REQUIRE(page.core.objectCount() == 4 + 20);
 
-    struct Platform { Vec2 center; double width, height, angle, friction, restitution; };
+    struct Platform {
+        Vec2 center;
+        double width, height, angle, friction, restitution;
+    };
     const Platform platforms[] = {
         {{500, 200}, 400, 20, 2.8, 0.3, 0.0},
         {{200, 400}, 400, 20, 0.0, 1.0, 0.5},
@@ -195,8 +198,8 @@ TEST_CASE("s5_1: when the selected shape is removed, object 0 is selected (the b
 TEST_CASE("s5_1: the same seed gives the same run, another seed another") {
     const test::ScratchFolder folder("s5_1_repeat");
     auto run = [&](const std::string& name, std::uint64_t seed) {
-        const std::string arguments = "--frames 90 --every 45 --no-gif --seed " + std::to_string(seed) +
-                                      " --out " + test::quoted(folder.path / name) + " --dump " +
+        const std::string arguments = "--frames 90 --every 45 --no-gif --seed " + std::to_string(seed) + " --out " +
+                                      test::quoted(folder.path / name) + " --dump " +
                                       test::quoted(folder.path / (name + ".csv"));
         const test::ProgramRun result = test::runStageProgram(folder, arguments);
         INFO(result.error_text);
@@ -231,7 +234,9 @@ TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
     CHECK(u16(8) == 450);
 }
 
-TEST_CASE("s5_1: the README's key script makes three boxes and three balls at once, and H at two seconds kicks every moving shape") {
+TEST_CASE(
+    "s5_1: the README's key script makes three boxes and three balls at once, and H at two seconds kicks every moving "
+    "shape") {
     // README.md, "Play it live": --keys "f*3 g*3 h@120" --frames 240. Frame 0's clock
     // holds a hair less than one step (core.cpp's timer), so frame k runs step k: the
     // presses of frame 0 come before step 1, which has six more shapes than step 0
@@ -239,9 +244,9 @@ TEST_CASE("s5_1: the README's key script makes three boxes and three balls at on
     // moving shape a new velocity, uniform in the square [-250, 250)^2 px/s, in step 120.
     test::ScratchFolder folder("s5_1_readme_script");
     const std::filesystem::path dump = folder.path / "dump.csv";
-    const test::ProgramRun run = test::runStageProgram(
-        folder, "--keys \"f*3 g*3 h@120\" --frames 240 --every 0 --no-gif --out " +
-                    test::quoted(folder.path / "out") + " --dump " + test::quoted(dump));
+    const test::ProgramRun run =
+        test::runStageProgram(folder, "--keys \"f*3 g*3 h@120\" --frames 240 --every 0 --no-gif --out " +
+                                          test::quoted(folder.path / "out") + " --dump " + test::quoted(dump));
     REQUIRE(run.status == 0);
     const std::vector<test::DumpRow> rows = test::readDump(dump);
     const auto at = [&](long step) {
@@ -271,7 +276,7 @@ TEST_CASE("s5_1: the README's key script makes three boxes and three balls at on
     };
     const double before = shareChanged(at(118), at(119)), kicked = shareChanged(at(119), at(120));
     INFO("share of moving shapes whose velocity changed by over 50 px/s: " << before << " before H, " << kicked
-                                                                              << " in its step");
+                                                                           << " in its step");
     CHECK(kicked > 0.9);
     CHECK(before < 0.5);
 

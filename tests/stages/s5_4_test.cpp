@@ -114,7 +114,8 @@ TEST_CASE("s5_4: a box resting flat on a floor touches it at two points, the end
     CHECK(manifold.points[0].key != manifold.points[1].key);
 }
 
-TEST_CASE("s5_4: a box hanging over the floor's end is cut at the floor's side: one point at the corner, one at the edge") {
+TEST_CASE(
+    "s5_4: a box hanging over the floor's end is cut at the floor's side: one point at the corner, one at the edge") {
     // The floor's face ends at x = 200; the box spans 180 to 220. Clipping by the
     // floor's side line x = 200 leaves the box's bottom face from 180 to 200.
     const engine::Rectangle floor({100, 110}, 200, 20, {.mass = 0});
@@ -245,7 +246,8 @@ TEST_CASE("s5_4: in a free collision the solver's impulses conserve momentum to 
     // overlap (Baumgarte) is done by impulses too.
     for (const char* method : {"baumgarte", "relax"}) {
         INFO(method);
-        test::WorldFixture page(solverWorld(std::string(R"(, "gravity": [0, 0], "position_method": ")") + method + "\""));
+        test::WorldFixture page(
+            solverWorld(std::string(R"(, "gravity": [0, 0], "position_method": ")") + method + "\""));
         engine::Rectangle& a = page.core.add(engine::Rectangle({100, 100}, 40, 30, {.mass = 2, .friction = 0.6}));
         engine::Rectangle& b = page.core.add(engine::Rectangle({170, 112}, 30, 50, {.mass = 3, .friction = 0.6}));
         engine::Circle& c = page.core.add(engine::Circle({130, 160}, 12, {.mass = 1.5, .friction = 0.4}));
@@ -302,7 +304,8 @@ TEST_CASE("s5_4: a fast impact bounces at e times its speed; below the threshold
     // the ball stays on the floor, at rest.
     test::WorldFixture page(solverWorld(R"(, "gravity": [0, 20])"));
     page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0, .friction = 0.5, .restitution = 0.5}));
-    engine::Circle& ball = page.core.add(engine::Circle({400, 200}, 10, {.mass = 1, .friction = 0.5, .restitution = 0.5}));
+    engine::Circle& ball =
+        page.core.add(engine::Circle({400, 200}, 10, {.mass = 1, .friction = 0.5, .restitution = 0.5}));
     double before = 0.0;
     int bounces = 0;
     for (int step = 0; step < 20 * kStepsPerSecond; ++step) {
@@ -423,7 +426,8 @@ ColumnEnd column(int iterations, bool warm) {
                                         ", \"warm_starting\": " + (warm ? "true" : "false")));
     page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0, .friction = 0.6, .restitution = 0}));
     for (int row = 0; row < 8; ++row) {
-        page.core.add(engine::Rectangle({400, 400 - 40.25 * row}, 40, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
+        page.core.add(
+            engine::Rectangle({400, 400 - 40.25 * row}, 40, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
     }
     page.steps(10 * kStepsPerSecond);
     return {page.core.object(page.core.objectCount() - 1).center().y, fastest(page.core)};
@@ -462,7 +466,8 @@ TEST_CASE("s5_4: a resting column's contact points are found again, by their key
     test::WorldFixture page(solverWorld());
     page.core.add(engine::Rectangle({400, 430}, 800, 20, {.mass = 0, .friction = 0.6, .restitution = 0}));
     for (int row = 0; row < 8; ++row) {
-        page.core.add(engine::Rectangle({400, 400 - 40.25 * row}, 40, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
+        page.core.add(
+            engine::Rectangle({400, 400 - 40.25 * row}, 40, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
     }
     page.steps(2 * kStepsPerSecond);
     const engine::ContactSolver& solver = page.core.physics().contactSolver();
@@ -471,11 +476,12 @@ TEST_CASE("s5_4: a resting column's contact points are found again, by their key
     CHECK(solver.persistedPointCount() == 16);
 }
 
-
 // =================================================================================
 // What the overlay draws (contact_overlay.h): the solver's own contacts
 
-TEST_CASE("s5_4: the overlay's faces and totals: the platform's top face is the reference, and a resting box's pushes add up to its weight") {
+TEST_CASE(
+    "s5_4: the overlay's faces and totals: the platform's top face is the reference, and a resting box's pushes add up "
+    "to its weight") {
     // A box hanging over a platform's end, as in clipping.json but at rest: 80 x 40, on
     // a platform whose top face (y = 140) ends at x = 280 while the box spans 210 to 290. The contact's points are
     // the box's bottom-left corner and the cut by the platform's side line x = 280; the

@@ -253,7 +253,9 @@ TEST_CASE("s5_5: wake rule: R removes shapes and wakes the islands they touched"
     for (std::size_t i = 1; i <= 5; ++i) CHECK(world.asleep(i));
 }
 
-TEST_CASE("s5_5: wake rule: removing the floor under a sleeping pile wakes it all within one step, and it falls as with sleep off") {
+TEST_CASE(
+    "s5_5: wake rule: removing the floor under a sleeping pile wakes it all within one step, and it falls as with "
+    "sleep off") {
     // The book's solver: a pile of three boxes and a ball on a floor.
     Sleepy on;
     on.floor();
@@ -281,8 +283,8 @@ TEST_CASE("s5_5: wake rule: removing the floor under a sleeping pile wakes it al
 
 TEST_CASE("s5_5: wake rule: every key that moves, turns, pushes or changes a shape wakes it and its island") {
     using browser::Key;
-    for (Key key : {Key::W, Key::A, Key::S, Key::D, Key::Q, Key::E, Key::I, Key::J, Key::K, Key::L, Key::U, Key::O,
-                    Key::Z, Key::X, Key::C, Key::V, Key::B, Key::N, Key::F, Key::G}) {
+    for (Key key : {Key::W, Key::A, Key::S, Key::D, Key::Q, Key::E, Key::I, Key::J, Key::K, Key::L,
+                    Key::U, Key::O, Key::Z, Key::X, Key::C, Key::V, Key::B, Key::N, Key::F, Key::G}) {
         INFO("key " << browser::key_name(key));
         TwoIslands world;
         REQUIRE(world.stepUntilAllAsleep());
@@ -368,7 +370,9 @@ int thrownUpAsleep(int count, double top_speed, Vec2 gravity, double seconds) {
     std::vector<bool> slept(static_cast<std::size_t>(count), false);
     for (int step = 0; step < seconds * kStepsPerSecond; ++step) {
         run.page.steps(1);
-        for (int i = 0; i < count; ++i) slept[static_cast<std::size_t>(i)] = slept[static_cast<std::size_t>(i)] || run.asleep(static_cast<std::size_t>(i));
+        for (int i = 0; i < count; ++i)
+            slept[static_cast<std::size_t>(i)] =
+                slept[static_cast<std::size_t>(i)] || run.asleep(static_cast<std::size_t>(i));
     }
     return static_cast<int>(std::count(slept.begin(), slept.end(), true));
 }
@@ -511,11 +515,13 @@ TEST_CASE("s5_5: a box that starts to slide slowly down a slope from rest does n
         world.friction_model = engine::FrictionModel::coulomb;
         Sleepy run(world);
         const double slope = 20.0 * 3.14159265358979 / 180.0;
-        engine::Rectangle& ramp = run.page.core.add(engine::Rectangle({400, 300}, 700, 20, {.mass = 0, .friction = 0.3}));
+        engine::Rectangle& ramp =
+            run.page.core.add(engine::Rectangle({400, 300}, 700, 20, {.mass = 0, .friction = 0.3}));
         ramp.rotate(slope);
         // The box sits on the ramp's top face, turned with it.
         const Vec2 normal{std::sin(slope), -std::cos(slope)};
-        engine::Rectangle& box = run.page.core.add(engine::Rectangle(Vec2{400, 300} + normal * 30.0, 40, 40, {.friction = 0.3}));
+        engine::Rectangle& box =
+            run.page.core.add(engine::Rectangle(Vec2{400, 300} + normal * 30.0, 40, 40, {.friction = 0.3}));
         box.rotate(slope);
         for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
             run.page.steps(1);
@@ -528,7 +534,8 @@ TEST_CASE("s5_5: a box that starts to slide slowly down a slope from rest does n
 TEST_CASE("s5_5: pyramid_20 and heavy_on_light stand with sleep on, and fall asleep") {
     for (const char* name : {"pyramid_20.json", "heavy_on_light.json"}) {
         INFO(name);
-        const engine::Scene scene = sceneFile(fs::path(BENCH_SCENES_DIR) / name, engine::SolverKind::sequential_impulse);
+        const engine::Scene scene =
+            sceneFile(fs::path(BENCH_SCENES_DIR) / name, engine::SolverKind::sequential_impulse);
         REQUIRE(scene.world.sleep);
         Sleepy run(scene.world);
         engine::buildScene(run.page.core, scene.bodies);
@@ -555,8 +562,8 @@ TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sl
     // The lone box at x = 150: its left side, x = 130, drawn gray from y 380 to 420.
     const browser::Image& image = world.page.window.document.canvas.pixels();
     const auto pixel = [&](int x, int y) {
-        const std::size_t at = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                    static_cast<std::size_t>(x));
+        const std::size_t at =
+            4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
         return browser::Color{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
     };
     // Lines are drawn smooth, so the outline's pixels are shades: gray ones have equal

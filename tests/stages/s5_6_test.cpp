@@ -57,7 +57,7 @@ WorldSettings shootingWorld(engine::SolverKind solver, bool continuous) {
 }
 
 constexpr double kShotSpeed = 20000.0;  // px/s: 333 px a step
-constexpr double kWallX = 400.0;         // the centre of the 2 px wall
+constexpr double kWallX = 400.0;        // the centre of the 2 px wall
 constexpr double kWallThickness = 2.0;
 
 double uniform(browser::Random& random, double low, double high) { return low + (high - low) * random.next(); }
@@ -304,7 +304,5 @@ TEST_CASE("s5_6: P turns continuous collision off and on live") {
     page.press(browser::Key::P);
     CHECK(page.core.settings().continuous);
 }
-
-
 
 }  // namespace s5_6_test

@@ -34,9 +34,7 @@ public:
     oracle::Box box(Vec2 center, double smallest, double largest) {
         return {center, logUniform(smallest, largest), logUniform(smallest, largest), anyAngle()};
     }
-    oracle::Disc disc(Vec2 center, double smallest, double largest) {
-        return {center, logUniform(smallest, largest)};
-    }
+    oracle::Disc disc(Vec2 center, double smallest, double largest) { return {center, logUniform(smallest, largest)}; }
     // A box with sides, or a disc with a diameter, from `smallest` to `largest`.
     oracle::Shape shape(bool is_box, Vec2 center, double smallest, double largest) {
         if (is_box) return box(center, smallest, largest);

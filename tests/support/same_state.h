@@ -33,7 +33,7 @@ inline std::vector<BodyState> stateOf(const engine::Core& core) {
 
 // Fails at the first body whose state differs in any bit.
 inline void requireSameState(const engine::Core& reference, const engine::Core& other, const std::string& what,
-                      long step) {
+                             long step) {
     const std::vector<BodyState> expected = stateOf(reference);
     const std::vector<BodyState> got = stateOf(other);
     INFO(what << ", step " << step);

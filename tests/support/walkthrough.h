@@ -18,9 +18,9 @@ namespace test {
 
 // Every row of the dump of `script` run for `frames` frames.
 inline std::vector<DumpRow> runWalkthrough(const ScratchFolder& folder, const std::string& script, int frames) {
-    const ProgramRun run = runStageProgram(folder, "--keys \"" + script + "\" --frames " + std::to_string(frames) +
-                                                       " --out " + quoted(folder.path / "out") + " --dump " +
-                                                       quoted(folder.path / "dump.csv"));
+    const ProgramRun run =
+        runStageProgram(folder, "--keys \"" + script + "\" --frames " + std::to_string(frames) + " --out " +
+                                    quoted(folder.path / "out") + " --dump " + quoted(folder.path / "dump.csv"));
     REQUIRE(run.status == 0);
     return readDump(folder.path / "dump.csv");
 }
