@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "markdown.h"
 #include "scene_maker.h"
@@ -22,6 +23,18 @@ std::size_t first_moving(const Snapshot& bodies) {
         if (!bodies[i].is_static) return i;
     }
     throw std::invalid_argument("the scene has no moving body");
+}
+
+// Both friction studies turn the same knobs: the friction law, and the knobs of passes,
+// step, integrator, rotation and solver that the error could come from instead.
+std::vector<Sweep> friction_knobs() {
+    return {{Knob::friction_model},
+            {Knob::relaxation_iterations},
+            {Knob::dt},
+            {Knob::substeps},
+            {Knob::integrator},
+            {Knob::rotation},
+            {Knob::solver}};
 }
 
 Measure slide_distance() {
@@ -68,13 +81,7 @@ StudyResult slide_study(const StudyContext& context) {
         figure(scenes::kSlideSpeed * scenes::kSlideSpeed / (2 * scenes::kSlideFriction * scenes::kSlideGravity)) +
         " px; *slide error* is how much further (+) or shorter (-) it went in " + figure(kSlideSeconds) +
         " s. The book's friction model is not Coulomb's (docs/errata.md, \"Friction\").";
-    plan.knobs = {{Knob::friction_model},
-                  {Knob::relaxation_iterations},
-                  {Knob::dt},
-                  {Knob::substeps},
-                  {Knob::integrator},
-                  {Knob::rotation},
-                  {Knob::solver}};
+    plan.knobs = friction_knobs();
     plan.measure = slide_distance();
     plan.error = {"size of the slide error (share of Coulomb's distance)",
                   [](const Metrics& m) { return m.slide_error; }, 1e-4};
@@ -102,13 +109,7 @@ StudyResult slope_study(const StudyContext& context) {
                     "*roll error* is how much further (+) or shorter (-) it ran in " +
                     figure(kRollSeconds) +
                     " s. Without rotation it cannot roll, and friction holds it or lets it slide.";
-    plan.knobs = {{Knob::friction_model},
-                  {Knob::relaxation_iterations},
-                  {Knob::dt},
-                  {Knob::substeps},
-                  {Knob::integrator},
-                  {Knob::rotation},
-                  {Knob::solver}};
+    plan.knobs = friction_knobs();
     plan.measure = roll_distance();
     plan.error = {"size of the roll error (share of the exact run)", [](const Metrics& m) { return m.roll_error; },
                   1e-4};
