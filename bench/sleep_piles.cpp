@@ -102,6 +102,12 @@ SceneDescription pile(const PileRecipe& recipe) {
     return scene;
 }
 
+SceneDescription issuePile() {
+    SceneDescription scene = pile(PileRecipe{});
+    scene.world.solver = Solver::sequential_impulse;
+    return scene;
+}
+
 std::string describe(const PileRecipe& recipe) {
     char line[160];
     std::snprintf(line, sizeof line, "g %g, mu %g, e %g, %g-%g px, %d deep, %s, seed %llu", recipe.gravity,

@@ -44,6 +44,11 @@ int shapeCount(const PileRecipe& recipe);
 // and gravity, shapes removed out of bounds never (none leave the box).
 SceneDescription pile(const PileRecipe& recipe);
 
+// The pile of issue 35 as the issue ran it: the recipe's defaults on the sequential
+// impulse solver. 5.5 keeps a copy as ch5_demo/5.5_sleeping/pile.json, for its tests and
+// its readers (tests/bench/sleep_piles_test.cpp checks that the two agree).
+SceneDescription issuePile();
+
 // One line that names the recipe, e.g. "g 20, mu 0.5, e 0.2, 10-25 px, 10 deep, mixed".
 std::string describe(const PileRecipe& recipe);
 

@@ -15,7 +15,8 @@
 // sleep_sweep.png (ours against Box2D's time to sleep, the median of each point), and
 // prints the README's table.
 //
-//   build/sleep_sweep [--seeds N] [--cap SECONDS] [--only NAME,...] [--solver S]
+//   build/sleep_sweep [--seeds N] [--book-seeds N] [--cap SECONDS] [--only NAME,...] [--solver S]
+//   build/sleep_sweep --write-pile ch5_demo/5.5_sleeping/pile.json   (the stage's copy)
 //
 // The targets (issue 35): on the sequential impulses, wherever Box2D's pile falls asleep,
 // ours is 99 % asleep no later than Box2D's time plus 1 s, and its settled step costs at
@@ -340,7 +341,11 @@ int main(int argc, char** argv) {
     std::vector<std::string> only;
     std::string solver_name = "both";
     CLI::App app("sleep_sweep: 5.5's sleeping over a grid of piles, beside Box2D 2.4", "sleep_sweep");
-    app.add_option("--seeds", seeds, "piles per point, each from its own seed")
+    int book_seeds = 1;
+    app.add_option("--seeds", seeds, "piles per point on the sequential impulses, each from its own seed")
+        ->check(CLI::Range(1, 20))
+        ->capture_default_str();
+    app.add_option("--book-seeds", book_seeds, "piles per point on the book's passes (ten times slower a step)")
         ->check(CLI::Range(1, 20))
         ->capture_default_str();
     app.add_option("--cap", cap_s, "simulated seconds at most, per pile and engine")
@@ -350,7 +355,19 @@ int main(int argc, char** argv) {
     app.add_option("--solver", solver_name, "both, sequential_impulse or book")
         ->check(CLI::IsMember({"both", "sequential_impulse", "book"}))
         ->capture_default_str();
+    std::string pile_file;
+    app.add_option("--write-pile", pile_file,
+                   "write issue 35's pile, on the sequential impulses, to this scene file, and do nothing else");
     CLI11_PARSE(app, argc, argv);
+    if (!pile_file.empty()) {
+        try {
+            bench::write_scene(pile_file, bench::piles::issuePile());
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "sleep_sweep: %s\n", error.what());
+            return 1;
+        }
+        return 0;
+    }
 
     std::vector<Point> points = grid();
     if (!only.empty()) {
@@ -366,13 +383,20 @@ int main(int argc, char** argv) {
     if (solver_name != "sequential_impulse") solvers.push_back(engine::SolverKind::book);
 
     std::vector<Run> runs;
+    const auto seeds_of = [&](engine::SolverKind solver) {
+        return solver == engine::SolverKind::book ? book_seeds : seeds;
+    };
     for (std::size_t p = 0; p < points.size(); ++p) {
-        for (int k = 0; k < seeds; ++k) {
+        for (int k = 0; k < std::max(seeds, book_seeds); ++k) {
+            if (std::none_of(solvers.begin(), solvers.end(), [&](auto solver) { return k < seeds_of(solver); })) {
+                break;
+            }
             PileRecipe recipe = points[p].recipe;
             recipe.seed += static_cast<std::uint64_t>(k);
             const bench::SceneDescription scene = bench::piles::pile(recipe);
             const Outcome box2d = runBox2d(scene, cap_s);
             for (const engine::SolverKind solver : solvers) {
+                if (k >= seeds_of(solver)) continue;
                 const Run run{p, recipe.seed, solver, runOurs(scene, solver, cap_s), box2d};
                 std::fprintf(stderr,
                              "%-24s seed %3llu %-18s landed %5s s, asleep %5s s (Box2D %5s s); settled %.1f us "
