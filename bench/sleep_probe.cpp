@@ -16,7 +16,7 @@
 // contact points found again from the step before (warm started).
 //
 //   build/sleep_probe [--solver S] [--seconds N] [--scene FILE | pile options]
-//                     [--world JSON] [--list | --noise | --woken SECONDS | --box2d]
+//                     [--world JSON] [--list | --noise | --woken SECONDS | --box2d | --terms]
 //
 // With no scene the pile is the one of issue 35 (bench/sleep_piles.h): 400 circles and
 // squares of 10 to 25 px under the demo's gravity, friction 0.5, restitution 0.2.
@@ -25,10 +25,13 @@
 //     --list       each second, every restless shape: where, how fast, and why
 //     --noise      sleep off: how far the shapes of the pile still go over the last
 //                  time to sleep, each at its worst (what the rule must call rest)
-//     --woken S    sleep on for --seconds, then off for S more: how far the shapes go
-//                  once woken (what sleeping had frozen)
+//     --woken S    sleep on for --seconds (unless --world turns it off), then off for S
+//                  more: how far the shapes go once woken (what sleeping had frozen)
 //     --box2d      sleep off, beside Box2D 2.4 on the same pile: how many shapes move
 //                  faster than 0.3 and 3 px/s, each second
+//     --terms      sleep off: each second, how many shapes each term of 5.5's first,
+//                  obvious sleep speed puts at or over 3 px/s alone (the README's table,
+//                  on --scene bench/scenes/rain_1000.json)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -43,6 +46,7 @@
 #include "box2d_world.h"
 #include "browser.h"
 #include "core.h"
+#include "narrow_phase.h"
 #include "scene_io.h"
 #include "scene_json.h"
 #include "sleep_piles.h"
@@ -96,6 +100,7 @@ struct Options {
     bool noise = false;
     double woken_s = 0.0;
     bool box2d = false;
+    bool terms = false;
 };
 
 bench::SceneDescription pileScene(const Options& options) { return bench::piles::pile(options.pile); }
@@ -262,7 +267,9 @@ void printWoken(Probe& probe, const Options& options) {
     for (int step = 0; step < static_cast<int>(options.seconds) * probe.stepsPerSecond(); ++step) core.update();
     const std::size_t awake = core.awakeCount();
     const std::vector<engine::Vec2> start = probe.centers();
-    core.toggleSleep();
+    engine::WorldSettings sleep_off = core.settings();
+    sleep_off.sleep = false;
+    core.changeSettings(sleep_off);  // wakes every shape
     for (int step = 0; step < static_cast<int>(options.woken_s * probe.stepsPerSecond()); ++step) core.update();
     std::vector<double> went;
     double depth_before = 0.0, depth_after = 0.0;
@@ -316,6 +323,65 @@ void compareWithBox2d(Probe& probe, const Options& options) {
     }
 }
 
+// Each shape's deepest overlap with any other, as the shapes stand now.
+std::vector<double> deepestOverlaps(const engine::Core& core) {
+    const std::size_t count = core.objectCount();
+    std::vector<double> deepest(count, 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        for (std::size_t j = i + 1; j < count; ++j) {
+            const engine::RigidShape& a = core.object(i);
+            const engine::RigidShape& b = core.object(j);
+            if (a.center().distance(b.center()) > a.boundRadius() + b.boundRadius()) continue;
+            const auto info = engine::narrowPhase(a, b);
+            if (!info) continue;
+            deepest[i] = std::max(deepest[i], info->depth());
+            deepest[j] = std::max(deepest[j], info->depth());
+        }
+    }
+    return deepest;
+}
+
+// --terms: with sleep off, each second, how many shapes each term of the first rule's
+// sleep speed alone puts at or over 3 px/s, beside the displacement over the step:
+//     |v|                      the velocity the shape ends its step with
+//     |w| r                    its spin at its extent (the bounding radius)
+//     max(0, d - slop) / dt    the overlap past the slop, as the step ends
+// with medians and 90th percentiles, in px/s.
+void printTerms(Probe& probe, const Options& options) {
+    constexpr double kThreshold = 3.0;  // px/s, the first rule's sleep speed
+    engine::Core& core = probe.core;
+    const engine::WorldSettings& world = probe.world;
+    std::printf("shapes at or over %.1f px/s by each term alone\n", kThreshold);
+    for (int second = 1; second <= static_cast<int>(options.seconds); ++second) {
+        for (int step = 1; step < probe.stepsPerSecond(); ++step) core.update();
+        const std::vector<engine::Vec2> centers = probe.centers();
+        std::vector<double> angles;
+        for (std::size_t i = 0; i < core.objectCount(); ++i) angles.push_back(core.object(i).angle());
+        core.update();
+        const std::vector<double> deepest = deepestOverlaps(core);
+        std::vector<double> linear, spin, overlap, moved;
+        for (std::size_t i = 0; i < core.objectCount(); ++i) {
+            const engine::RigidShape& shape = core.object(i);
+            if (shape.isStatic()) continue;
+            linear.push_back(shape.velocity().length());
+            spin.push_back(std::abs(shape.angularVelocity()) * shape.boundRadius());
+            overlap.push_back(std::max(0.0, deepest[i] - world.slop) / world.dt);
+            moved.push_back(
+                (shape.center().distance(centers[i]) + std::abs(shape.angle() - angles[i]) * shape.boundRadius()) /
+                world.dt);
+        }
+        const auto over = [&](const std::vector<double>& values) {
+            return std::count_if(values.begin(), values.end(), [&](double v) { return v >= kThreshold; });
+        };
+        std::printf(
+            "t %2d s  |v| %4ld  |w|r %4ld  overlap %4ld  displacement %4ld   median/p90: |v| %.2f/%.2f  "
+            "|w|r %.2f/%.2f  overlap %.2f/%.2f  displacement %.2f/%.2f\n",
+            second, over(linear), over(spin), over(overlap), over(moved), quantile(linear, 0.5), quantile(linear, 0.9),
+            quantile(spin, 0.5), quantile(spin, 0.9), quantile(overlap, 0.5), quantile(overlap, 0.9),
+            quantile(moved, 0.5), quantile(moved, 0.9));
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -348,9 +414,11 @@ int main(int argc, char** argv) {
     auto* woken = app.add_option("--woken", options.woken_s, "then sleep off for this many s: how far shapes go")
                       ->check(CLI::Range(0.1, 600.0));
     auto* box2d = app.add_flag("--box2d", options.box2d, "sleep off, beside Box2D 2.4: how many shapes move");
-    list->excludes(noise, woken, box2d);
-    noise->excludes(woken, box2d);
-    woken->excludes(box2d);
+    auto* terms = app.add_flag("--terms", options.terms, "sleep off: the shapes each term of the first rule holds");
+    list->excludes(noise, woken, box2d, terms);
+    noise->excludes(woken, box2d, terms);
+    woken->excludes(box2d, terms);
+    box2d->excludes(terms);
     CLI11_PARSE(app, argc, argv);
     options.pile.kinds = options.kinds == "circles"   ? bench::piles::Kinds::circles
                          : options.kinds == "squares" ? bench::piles::Kinds::squares
@@ -373,7 +441,7 @@ int main(int argc, char** argv) {
     }
     engine::WorldSettings world = scene.world;
     world.solver = options.solver == "book" ? engine::SolverKind::book : engine::SolverKind::sequential_impulse;
-    world.sleep = !options.noise && !options.box2d;
+    world.sleep = !options.noise && !options.box2d && !options.terms;
     Probe probe(world);
     engine::buildScene(probe.core, scene.bodies);
     std::printf("%s, %s; sleep speed %.2f px/s, time to sleep %.2f s, drift allowed %.3f px\n",
@@ -386,6 +454,8 @@ int main(int argc, char** argv) {
         printWoken(probe, options);
     } else if (options.box2d) {
         compareWithBox2d(probe, options);
+    } else if (options.terms) {
+        printTerms(probe, options);
     } else {
         watchTheRule(probe, options);
     }
