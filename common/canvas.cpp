@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "page.h"  // draw_text, the page's font
+#include "text.h"  // draw_text, the page's font
 
 namespace browser {
 

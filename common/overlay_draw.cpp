@@ -1,10 +1,10 @@
 #include "overlay_draw.h"
 
-#include "page.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "text.h"
 
 namespace browser::overlay {
 namespace {
