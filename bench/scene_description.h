@@ -18,7 +18,7 @@
 
 namespace bench {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // The choices of the stages after the book, spelled as in scene files
 // (docs/scene_format.md).

@@ -7,6 +7,9 @@
 #include "text.h"
 
 namespace browser::overlay {
+
+using lib::Vec2;
+
 namespace {
 
 constexpr double kShortestArrow = 0.01;   // px

@@ -27,6 +27,7 @@
 
 namespace browser {
 
+using lib::Vec2;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 

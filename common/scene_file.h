@@ -41,7 +41,7 @@ std::string_view shape_name(ShapeKind shape);
 
 struct BodyDescription {
     ShapeKind shape = ShapeKind::rectangle;
-    Vec2 center;
+    lib::Vec2 center;
     double width = 0.0;   // rectangles only
     double height = 0.0;  // rectangles only
     double radius = 0.0;  // circles only
@@ -49,7 +49,7 @@ struct BodyDescription {
     double friction = 0.8;
     double restitution = 0.2;
     double angle = 0.0;  // rad, applied after construction as the book's rotate(angle)
-    Vec2 velocity;
+    lib::Vec2 velocity;
     double angular_velocity = 0.0;  // rad/s
     // 5.6 on: a bullet is also swept against moving shapes, not only static ones (5.6's
     // README). Only a stage that says it reads the key (StageBodyKeys) accepts it.
@@ -133,7 +133,7 @@ public:
     // A whole number; `rule` must accept only values an int holds.
     WorldKey(std::string_view name, int& setting, NumberRule rule) : name_(name), target_(Count{&setting, rule}) {}
     WorldKey(std::string_view name, bool& setting) : name_(name), target_(Flag{&setting}) {}
-    WorldKey(std::string_view name, Vec2& setting, NumberRule rule = rules::kFinite)
+    WorldKey(std::string_view name, lib::Vec2& setting, NumberRule rule = rules::kFinite)
         : name_(name), target_(Vector{&setting, rule}) {}
     // One word from a fixed list, each naming a value of the setting's enum.
     template <class Enum>
@@ -154,7 +154,7 @@ public:
         bool* setting;
     };
     struct Vector {
-        Vec2* setting;
+        lib::Vec2* setting;
         NumberRule rule;
     };
     struct Word {

@@ -108,8 +108,8 @@ StateDump::~StateDump() {
     fs::remove(partial_, ignored);
 }
 
-void StateDump::row(long step, std::size_t index, std::string_view shape, Vec2 center, double angle, Vec2 velocity,
-                    double angular_velocity) {
+void StateDump::row(long step, std::size_t index, std::string_view shape, lib::Vec2 center, double angle,
+                    lib::Vec2 velocity, double angular_velocity) {
     if (finished_) throw std::logic_error("StateDump::row after finish()");
     if (!is_shape_name(shape)) {
         std::string message = "StateDump::row: unknown shape \"";

@@ -57,7 +57,7 @@ public:
     // `shape` is "rectangle" or "circle" (shape_name() in scene_file.h spells them);
     // anything else throws std::invalid_argument rather than write a row tools misread.
     // Throws FileError when the write fails, std::logic_error after finish().
-    void row(long step, std::size_t index, std::string_view shape, Vec2 center, double angle, Vec2 velocity,
+    void row(long step, std::size_t index, std::string_view shape, lib::Vec2 center, double angle, lib::Vec2 velocity,
              double angular_velocity);
 
     // Completes the file and renames it to `path`. Throws FileError, and removes the

@@ -9,7 +9,7 @@
 namespace {
 
 using bench::BodyState;
-using browser::Vec2;
+using lib::Vec2;
 
 BodyState box(Vec2 center, double width, double height, bool fixed = false, double angle = 0.0) {
     return {.shape = oracle::Box{center, width, height, angle}, .is_static = fixed, .mass = fixed ? 0.0 : 1.0};

@@ -93,7 +93,7 @@ TEST_CASE("scenes: the rains hold the shapes asked for in an open box, none over
 
 TEST_CASE("scenes: the gas is 60 discs at 150 px/s, elastic and frictionless, in a closed box without gravity") {
     const SceneDescription scene = bench::scenes::gas();
-    CHECK(scene.world.gravity == browser::Vec2{0, 0});
+    CHECK(scene.world.gravity == lib::Vec2{0, 0});
     CHECK(scene.bodies.size() == 64);
     for (const auto& body : scene.bodies) {
         CHECK(body.restitution == 1.0);

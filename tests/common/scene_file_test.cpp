@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 using browser::BodyDescription;
 using browser::SceneError;
 using browser::ShapeKind;
-using browser::Vec2;
 using browser::WorldKey;
+using lib::Vec2;
 
 namespace {
 

@@ -22,7 +22,7 @@
 namespace fs = std::filesystem;
 using browser::FileError;
 using browser::StateDump;
-using browser::Vec2;
+using lib::Vec2;
 
 namespace {
 
