@@ -90,7 +90,7 @@ public:
         }
     }
 
-    // The one line a successful run prints, e.g. "wrote 3 pictures to out/s2_2/
+    // The one line a successful run prints, e.g. "wrote 3 pictures to out/<id>/
     // (final.png, frame_0000.png, frame_0030.png), contact_sheet.png and
     // animation.gif (30 frames)".
     std::string summary(const fs::path& out) const {

@@ -48,7 +48,7 @@ bool agree(double a, double b, DumpTolerance tolerance);
 
 enum class DivergenceKind {
     value,       // a number differs beyond the tolerance
-    shape,       // body `index` is a rectangle in one dump, a circle in the other
+    shape,       // body `index` is of one kind in one dump, of another in the other
     extra_body,  // one dump has more bodies at this step
     steps_end,   // one dump has no rows for this step: its run did not update any more
 };

@@ -32,14 +32,14 @@ void arrow(Canvas& canvas, lib::Vec2 tail, lib::Vec2 head, Color color);
 // A cross at `at`, with `label` (one line; "" for none) just above to its right.
 void marker(Canvas& canvas, lib::Vec2 at, Color color, std::string_view label = {});
 
-// A circle of `radius` around `center` (a bounding circle, a reach).
-void ring(Canvas& canvas, lib::Vec2 center, double radius, Color color);
+// A ring `r` px around `center` (a bound, a reach).
+void ring(Canvas& canvas, lib::Vec2 center, double r, Color color);
 
-// A curved arrow along the circle of `radius` around `center`, from the angle `start`
+// A curved arrow along the ring `r` px around `center`, from the angle `start`
 // turning by `sweep` (rad; positive turns clockwise on screen, as angles do in canvas
 // coordinates), its head at the end: a spin, or a turn one impulse gives. A sweep under
 // a thousandth of a radian draws nothing.
-void turn_arrow(Canvas& canvas, lib::Vec2 center, double radius, double start, double sweep, Color color);
+void turn_arrow(Canvas& canvas, lib::Vec2 center, double r, double start, double sweep, Color color);
 
 // A label with its top-left corner at `at`.
 void label(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);

@@ -38,7 +38,7 @@ namespace {
 // the file name in front, so no helper needs to carry it around.
 
 struct Refusal {
-    std::string where;  // a JSON path ("bodies[3].radius"), or "line 2, column 7"
+    std::string where;  // a JSON path ("springs[3].anchor"), or "line 2, column 7"
     std::string problem;
 };
 
@@ -63,8 +63,8 @@ std::string shown(const json& value) { return shortened(value.dump(-1, ' ', true
     refuse(std::move(where), std::move(text));
 }
 
-// JSON paths as a reader would write them: world.gravity[1], bodies[3].radius. A key
-// that is not a plain word is quoted (bodies[0]["my key"]), so that a strange key, even
+// JSON paths as a reader would write them: world.gravity[1], springs[3].anchor. A key
+// that is not a plain word is quoted (springs[0]["my key"]), so that a strange key, even
 // one holding a line break, cannot break the one-line message.
 constexpr std::size_t kLongestPlainKey = 40;
 
@@ -331,7 +331,7 @@ Assignment read_key(const SceneKey& key, const json& value, const std::string& p
 }
 
 // The assignments of the keys `object` gives, in the order of `keys`. `owner` names the
-// object in a refusal ("this stage's world", "a circle body"); `known` leads with the
+// object in a refusal ("this stage's world", "a hard spring"); `known` leads with the
 // keys read before these (an element's kind key).
 std::vector<Assignment> read_keys(const json& object, const std::string& path, std::span<const SceneKey> keys,
                                   std::string_view owner, std::vector<std::string> known = {}) {
@@ -365,7 +365,7 @@ std::vector<Assignment> read_world(const json& world, std::span<const SceneKey> 
 // Lists. An element's keys depend on its kind, so the kind is read first: a key of
 // another kind on it is as wrong as a typo.
 
-// "\"rectangle\" or \"circle\"": the words a kind key takes, as a refusal lists them.
+// "\"hard\" or \"soft\"": the words a kind key takes, as a refusal lists them.
 std::string choices(std::span<const std::string_view> words) {
     std::string text;
     for (std::size_t i = 0; i < words.size(); ++i) {

@@ -45,7 +45,7 @@ inline constexpr std::size_t kMaxSceneBytes = 2 << 20;  // 2 MiB
 inline constexpr std::size_t kMaxNesting = 4;
 
 // Rules any stage may use; a stage writes its own for its own keys (its scene_io.cpp:
-// sizes, masses, speeds, ... are the engine's to bound). No number of an accepted scene
+// the engine's quantities are the engine's to bound). No number of an accepted scene
 // may make a NaN or an infinity, so every rule refuses both.
 namespace rules {
 inline constexpr NumberRule kFinite{[](double v) { return std::isfinite(v); }, "must be a finite number"};
@@ -71,7 +71,7 @@ inline constexpr Presence kRequired = Presence::required;
 //   SceneKey{"dt", settings.dt, kTimeStep}
 //   SceneKey{"movement", settings.movement}
 //   SceneKey{"integrator", settings.integrator, {{"symplectic", Integrator::symplectic}, ...}}
-//   SceneKey{"radius", body.radius, kSize, browser::kRequired}
+//   SceneKey{"anchor", spring.anchor, rules::kFinite, browser::kRequired}
 class SceneKey {
 public:
     SceneKey(std::string_view name, double& setting, NumberRule rule = rules::kFinite,
@@ -147,11 +147,11 @@ private:
     std::variant<Number, Count, Flag, Vector, Word> target_;
 };
 
-// A list a scene may hold, such as a stage's "bodies": each element an object whose
+// A list a scene may hold, such as a stage's bodies: each element an object whose
 // kind key names one of the kinds, and the kind decides which other keys it takes.
 struct SceneList {
-    std::string_view name;                // the list's key in the scene: "bodies"
-    std::string_view element;             // what messages call one element: "body"
+    std::string_view name;                // the list's key in the scene: "springs"
+    std::string_view element;             // what messages call one element: "spring"
     std::string_view kind_key;            // the key that names an element's kind, read first
     std::vector<std::string_view> kinds;  // the words it takes, each a kind
     // The most elements the list may hold, and why, in the words of the refusal:
@@ -178,7 +178,7 @@ std::string scene_text(const std::filesystem::path& file);
 
 // Reads and checks `file`: its world keys go into the settings `world_keys` are bound
 // to, and the elements of each list into the stage's own lists through `lists`, in file
-// order (for bodies, the object index the keys 0-9 select). Throws SceneError on the
+// order (for a stage's bodies, the object index the keys 0-9 select). Throws SceneError on the
 // first problem found; the world's settings are then left as they were, so nothing is
 // built from a scene that is only half right.
 void load_scene(const std::filesystem::path& file, std::span<const SceneKey> world_keys,

@@ -59,7 +59,7 @@ struct ObjectState {
 };
 
 // What the harness sees of a page's world. Each part may be left empty: a page with no
-// world stepping in fixed steps (1.1) has none, and only a stage with scene files dumps.
+// world stepping in fixed steps (the first chapter's) has none, and only a stage with scene files dumps.
 struct PageWorld {
     std::function<long()> steps;                         // the fixed steps run so far
     std::function<std::vector<ObjectState>()> objects;   // every object now, in list order

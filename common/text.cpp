@@ -32,7 +32,7 @@ int text_width(std::string_view line) {
 }
 
 // The font hands back quads (four corners each, x y z floats then 4 colour bytes);
-// with kTextScale whole, every quad covers whole pixels, so each is a plain rectangle
+// with kTextScale whole, every quad covers whole pixels, so each is a plain box
 // fill.
 void draw_text(Image& picture, std::string_view line, int x, int y, Color color, int scale) {
     std::string text = font_text(line);  // also a mutable copy, which the font's functions take
