@@ -1,5 +1,5 @@
 #pragma once
-// Scene files (--scene FILE): this stage's vocabulary, the words a scene may use, each
+// Scene files (--scene FILE): the stage's vocabulary, the words a scene may use, each
 // bound to the setting or the member it fills, and the world built from a scene. Not in
 // the book: a reader changes the scene without recompiling (docs/scene_format.md). The
 // browser reads the JSON and reports every problem in one format (scene_file.h); the
@@ -35,7 +35,7 @@ struct BodyDescription {
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
 };
 
-// The world keys this stage reads, bound to `world`: one for each of its settings.
+// The world keys the stage reads, bound to `world`: one for each of its settings.
 std::vector<browser::SceneKey> worldKeys(WorldSettings& world);
 // The keys a body of `body.shape` takes, bound to `body`, in the order refusals list them.
 std::vector<browser::SceneKey> bodyKeys(BodyDescription& body);
@@ -45,7 +45,7 @@ browser::SceneList bodyList(std::vector<BodyDescription>& bodies);
 // How scene files and state dumps spell a shape type: "rectangle", "circle".
 std::string_view shapeName(ShapeType type);
 
-// A scene file, read with this stage's keys: the book's world where the file says
+// A scene file, read with the stage's keys: the book's world where the file says
 // nothing, and the file's bodies. Throws browser::SceneError with one line.
 struct Scene {
     WorldSettings world = kBookWorld;

@@ -10,7 +10,7 @@ namespace engine {
 
 namespace {
 
-// The rules of this stage's numbers. No number of an accepted scene may make a NaN or
+// The rules of the stage's numbers. No number of an accepted scene may make a NaN or
 // an infinity. Every quantity a body derives from them is then a plain double: with
 // masses in [1e-3, 1e6] and sizes in [0.01, 1e5] px, the inverse mass lies in [1e-6,
 // 1e3] and the moment of inertia (m r^2 / 2, m (w^2 + h^2) / 12) in [1e-8, 1e16], its
