@@ -7,6 +7,8 @@
 #include <numbers>
 #include <string>
 
+#include "text.h"
+
 namespace engine {
 namespace {
 

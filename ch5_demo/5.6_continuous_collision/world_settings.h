@@ -18,7 +18,7 @@
 
 namespace engine {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // The book's world advances in fixed steps of 1/60 s, whatever the frame rate.
 inline constexpr double kFPS = 60.0;
@@ -61,7 +61,7 @@ inline constexpr double kPositionRate = 0.2;           // share of the overlap p
 inline constexpr double kSlop = 0.15;                  // px of overlap left alone
 
 // Sleeping (islands.h; README.md derives every number). A shape rests while its sleep
-// speed stays under the world's sleep speed: unless a scene sets one, 3 px/s, or the
+// speed stays under the world's sleep speed: 3 px/s (the scene's sleep_speed), or the
 // speed gravity gives in 0.15 s where that is more (15 px/s under 100 px/s^2). A shape
 // at the top of its arc is then that slow for 2 * 0.15 = 0.3 s at most, less than the
 // time to sleep, and the jitter of a resting pile, which grows with gravity, stays
@@ -72,8 +72,6 @@ inline constexpr double kSleepSpeed = 3.0;       // px/s, the least
 inline constexpr double kSleepSpeedTime = 0.15;  // s
 inline constexpr double kCreepSpeed = 0.3;       // px/s
 inline constexpr double kTimeToSleep = 0.5;      // s
-// sleep_speed when the scene sets none: the engine derives it (sleepSpeed, below).
-inline constexpr double kSleepSpeedFromGravity = -1.0;
 
 struct WorldSettings {
     double width = 800.0;   // px, the canvas
@@ -112,8 +110,8 @@ struct WorldSettings {
     // 5.5's sleeping, on unless a scene turns it off; with it off every scene runs
     // as in 5.4, bit for bit. The slop above is also the overlap the sleep rule forgives.
     bool sleep = true;
-    double sleep_speed = kSleepSpeedFromGravity;  // px/s, >= 0 when a scene sets it
-    double time_to_sleep = kTimeToSleep;          // s
+    double sleep_speed = kSleepSpeed;     // px/s, the least (sleepSpeed, below)
+    double time_to_sleep = kTimeToSleep;  // s
     // This stage's continuous collision (continuous.h): a shape that moves far in a step
     // against its own size is swept to where it first touches, so it cannot pass
     // through a thin wall. On unless a scene turns it off; off, every scene runs as in
@@ -123,10 +121,10 @@ struct WorldSettings {
     friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };
 
-// The sleep speed of `world`: the scene's, or the one its gravity calls for.
+// The sleep speed of `world`: its sleep_speed, or what its gravity gives in 0.15 s
+// where that is more.
 inline double sleepSpeed(const WorldSettings& world) {
-    if (world.sleep_speed >= 0.0) return world.sleep_speed;
-    return std::max(kSleepSpeed, kSleepSpeedTime * world.gravity.length());
+    return std::max(world.sleep_speed, kSleepSpeedTime * world.gravity.length());
 }
 
 // The world of the book's cool demo, unless a scene file says otherwise.
