@@ -39,9 +39,10 @@ std::vector<std::string> sorted_names(const fs::path& folder) {
 // deep and no deeper.
 constexpr int kDeepestWrittenFolder = 4;
 
-bool is_plain_folder(const fs::path& path) {
+// A folder (not a link to one) that holds a run's manifest.
+bool is_run_folder(const fs::path& path) {
     struct stat status {};
-    return ::lstat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode);
+    return ::lstat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode) && is_plain_file(path / kManifest);
 }
 
 // The first thing in `folder` that no run wrote, as a path inside it; "" when none.
@@ -50,7 +51,7 @@ std::string first_unwritten(const fs::path& folder, int depth) {
     for (const std::string& name : sorted_names(folder)) {
         const bool listed = name == kManifest || written.contains(name);
         if (listed && is_plain_file(folder / name)) continue;
-        if (listed && name != kManifest && depth < kDeepestWrittenFolder && is_plain_folder(folder / name)) {
+        if (listed && name != kManifest && depth < kDeepestWrittenFolder && is_run_folder(folder / name)) {
             const std::string inner = first_unwritten(folder / name, depth + 1);
             if (inner.empty()) continue;
             return (fs::path(name) / inner).string();
@@ -77,7 +78,7 @@ void remove_written(const fs::path& folder, int depth = 1) {
     std::error_code ignored;
     for (const std::string& name : manifest_names(folder)) {
         if (is_plain_file(folder / name)) fs::remove(folder / name, ignored);
-        else if (depth < kDeepestWrittenFolder && is_plain_folder(folder / name))
+        else if (depth < kDeepestWrittenFolder && is_run_folder(folder / name))
             remove_written(folder / name, depth + 1);
     }
     fs::remove(folder / kManifest, ignored);
