@@ -135,13 +135,24 @@ private:
     std::size_t depth_ = 0;
 };
 
-// `text` as a JSON object nested at most `most` levels; nothing when it is not one.
-// Throws Stop (refused) with `deep_line` when it nests deeper.
-std::optional<json> json_object(const std::string& text, std::size_t most, const std::string& deep_line) {
+// `text` as a JSON object nested at most `most` levels; nothing when it is JSON but no
+// object. Throws Stop (refused) naming `what`: `deep_line` when it nests deeper, the
+// parser's reason (its "[json.exception...]" and "last read" left out) when it is not JSON.
+std::optional<json> json_object(const std::string& text, std::size_t most, const std::string& what,
+                                const std::string& deep_line) {
     NestingCheck check(most);
     json::sax_parse(text, &check);
     if (check.too_deep) throw Stop{kRefused, deep_line};
-    json value = json::parse(text, nullptr, false);
+    json value;
+    try {
+        value = json::parse(text);
+    } catch (const json::exception& error) {
+        std::string_view reason = error.what();
+        if (const std::size_t bracket = reason.find("] "); bracket != std::string_view::npos)
+            reason.remove_prefix(bracket + 2);
+        reason = reason.substr(0, reason.find("; last read"));
+        throw Stop{kRefused, what + " is not JSON (" + browser::first_words(reason, browser::kLongestShown) + ")"};
+    }
     if (!value.is_object()) return std::nullopt;
     return value;
 }
@@ -155,7 +166,7 @@ json read_scene(const fs::path& file) {
     }
     const std::string named = "the scene " + browser::in_quotes(file.string());
     std::optional<json> scene = json_object(
-        text, browser::kMaxNesting,
+        text, browser::kMaxNesting, named,
         named + " is nested deeper than a scene can be (" + std::to_string(browser::kMaxNesting) + " levels)");
     if (!scene) throw Stop{kRefused, named + " is not a JSON object"};
     return *scene;
@@ -170,7 +181,7 @@ json scene_with(json scene, const std::string& setting, const std::string& side)
     }
     const std::size_t most = browser::kMaxNesting - 1;
     const std::optional<json> keys = json_object(
-        setting, most, named + " is nested deeper than world keys go (" + std::to_string(most) + " levels)");
+        setting, most, named, named + " is nested deeper than world keys go (" + std::to_string(most) + " levels)");
     if (!keys) throw Stop{kRefused, named + " is not a JSON object of world keys, e.g. '{\"solver\": \"book\"}'"};
     if (!scene.contains("world")) scene["world"] = json::object();
     for (const auto& [key, value] : keys->items()) scene["world"][key] = value;
