@@ -23,10 +23,11 @@ while (($#)); do
   esac
 done
 
-line=$(grep -E '^add_stage\(' CMakeLists.txt | tail -1)
-id=$(sed -E 's/^add_stage\(([^ ]+) .*/\1/' <<<"$line")
-folder=$(sed -E 's/.* FOLDER ([^ ]+).*/\1/' <<<"$line")
-program=${id}_$(sed -E 's/.* PROGRAM ([^ ]+).*/\1/' <<<"$line")
+source tools/lib/stages.sh
+newest=$(stage_newest)
+id=$(stage_id "$newest")
+folder=$(stage_folder "$newest")
+program=${id}_$(stage_program "$newest")
 gxx_build=${GXX_BUILD_DIR:-build}
 gxx=$gxx_build/$program clang=${FUZZ_BUILD_DIR:-build-fuzz}/$program
 for built in "$gxx" "$clang" "$gxx_build/first_divergence"; do

@@ -6,8 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=$(cd "$1" && pwd)
-line=$(grep -E '^add_stage\(' CMakeLists.txt | tail -1)
-program=$(sed -E 's/^add_stage\(([^ ]+) .*/\1/' <<<"$line")_$(sed -E 's/.* PROGRAM ([^ ]+).*/\1/' <<<"$line")
+source tools/lib/stages.sh
+program=$(stage_id "$(stage_newest)")_$(stage_program "$(stage_newest)")
 stand_in=$(mktemp -d)
 trap 'rm -rf "$stand_in"' EXIT
 cat >"$stand_in/$program" <<STANDIN
