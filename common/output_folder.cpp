@@ -116,7 +116,7 @@ std::set<std::string> manifest_names(const fs::path& folder) {
     return names;
 }
 
-// "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
+// "out/x/" and "out/x" name the same folder; without the trailing separator
 // the staging folder would land inside it rather than beside it.
 fs::path OutputFolder::normalized(const fs::path& given) {
     fs::path path = given.lexically_normal();

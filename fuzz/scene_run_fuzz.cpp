@@ -22,12 +22,17 @@
 #include "continuous.h"
 #include "core.h"
 #include "fuzz_check.h"
+#include "keys.h"
+#include "page_world.h"
 #include "scene_file.h"
 #include "scene_io.h"
+#include "stage_main.h"
+#include "state_dump.h"
 
 namespace {
 
-// The pair tests a fuzz input may cost, over all its steps: a few milliseconds.
+// The pair tests a fuzz input may cost, over all its steps (page_world.h counts a step's
+// as the program's budget does): a few milliseconds.
 constexpr double kPairTestBudget = 2e6;
 constexpr int kMostSteps = 20;
 
@@ -56,16 +61,16 @@ std::vector<BodyState> run(const engine::Scene& scene) {
     browser::Window window(scene.world.dt * 1000.0);
     engine::Core core(window, scene.world);
     engine::buildScene(core, scene.bodies);
-    const browser::StepCost cost = engine::stepCost(core);
-    const double shapes = static_cast<double>(cost.shapes);
-    const double per_step = std::max(1.0, shapes * shapes / 2 * cost.passes * cost.substeps);
+    const browser::PageWorld world = engine::pageWorld(core);
+    const browser::WorldCost cost = engine::worldCost(core, browser::KeyScript());
+    const double per_step = std::max(1.0, cost.step_work);
     const int steps = std::clamp(static_cast<int>(kPairTestBudget / per_step), 1, kMostSteps);
     std::vector<BodyState> states;
     for (int step = 0; step < steps; ++step) {
         core.update();
-        if (cost.substeps == 1) checkSweeps(core);  // a sub-step's sweeps are its own
+        if (scene.world.substeps == 1) checkSweeps(core);  // a sub-step's sweeps are its own
         try {
-            engine::checkFinite(core);
+            browser::check_finite(world);
         } catch (const browser::NonFiniteState&) {
             break;  // the program stops here, with exit status 3
         }
@@ -84,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text(reinterpret_cast<const char*>(data), size);
     engine::Scene scene;
     try {
-        scene.bodies = browser::read_scene_text(text, "fuzz.json", engine::worldKeys(scene.world), {.bullet = true});
+        scene = engine::readScene(text, "fuzz.json");
     } catch (const browser::SceneError& refusal) {
         fuzz::require(fuzz::one_line(refusal.what()), "a refusal is one line:", refusal.what());
         return 0;

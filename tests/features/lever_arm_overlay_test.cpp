@@ -25,9 +25,9 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
-    CHECK_THAT(response.contact, test::near(browser::Vec2{218.5, 100.5}, 1e-9));
-    CHECK_THAT(response.arm_first, test::near(browser::Vec2{18, 0}, 1e-9));
-    CHECK_THAT(response.arm_second, test::near(browser::Vec2{-20, 0}, 1e-9));
+    CHECK_THAT(response.contact, test::near(lib::Vec2{218.5, 100.5}, 1e-9));
+    CHECK_THAT(response.arm_first, test::near(lib::Vec2{18, 0}, 1e-9));
+    CHECK_THAT(response.arm_second, test::near(lib::Vec2{-20, 0}, 1e-9));
     CHECK(response.spin_first == 0.0);
     CHECK(response.spin_second == 0.0);
     browser::Color lever{};

@@ -32,13 +32,13 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     // Halfway, at -pi/2 + 0.5, it passes (307.21, 188.22): that pixel is mostly the
     // velocity colour. The same radius a quarter turn before the start is untouched.
     const auto on_arc = [](double angle) {
-        return browser::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
+        return lib::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
     };
-    const browser::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
+    const lib::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
     const browser::Color arc = pixels.at(static_cast<int>(middle.x), static_cast<int>(middle.y));
     CHECK(arc.g < 200);  // white would be 255 in each channel
     CHECK(arc.r < 200);
-    const browser::Vec2 before = on_arc(-std::acos(-1.0));
+    const lib::Vec2 before = on_arc(-std::acos(-1.0));
     CHECK(pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)) == browser::colors::kWhite);
 }
 

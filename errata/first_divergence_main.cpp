@@ -19,6 +19,7 @@
 #include <CLI/CLI.hpp>
 
 #include "dump_divergence.h"
+#include "known_differences.h"
 #include "message_text.h"
 
 namespace {
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
             std::cout << "no divergence: " << name_a << " and " << name_b << " agree at every step\n";
             return kAgree;
         }
-        std::cout << browser::describe(*divergence, name_a, name_b, tolerance, stage);
+        std::cout << browser::describe(*divergence, name_a, name_b, tolerance);
+        if (divergence->step > 0) std::cout << errata::explanation(*divergence, stage);
         return kDiffer;
     } catch (const browser::DumpError& error) {
         std::cerr << "first_divergence: " << error.what() << '\n';
