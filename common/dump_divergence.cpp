@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "message_text.h"
-#include "png_io.h"  // FileError
+#include "png_io.h"      // FileError
 #include "state_dump.h"  // is_plain_word
 
 namespace browser {
