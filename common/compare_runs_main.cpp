@@ -313,7 +313,7 @@ void check_crop(const std::vector<long long>& crop, const browser::Image& canvas
     if (crop[0] + crop[2] > width || crop[1] + crop[3] > height) {
         throw Stop{kRefused, "--crop " + std::to_string(crop[0]) + "," + std::to_string(crop[1]) + "," +
                                  std::to_string(crop[2]) + "," + std::to_string(crop[3]) +
-                                 ": the rectangle must lie within the canvas, " + std::to_string(width) + " x " +
+                                 ": the crop must lie within the canvas, " + std::to_string(width) + " x " +
                                  std::to_string(height) + " px"};
     }
 }
