@@ -6,7 +6,9 @@
 #   <id>_tests         tests/features/<feature>_test.cpp for each listed feature, compiled
 #                      against this folder's headers, plus tests/stages/<id>_test.cpp
 #                      (only when Catch2 was found: PHYSICS_TESTS)
-#   <id>               builds the three above: `cmake --build build --target <id>`
+#   <id>               builds the three above and compare_png, all that the tests
+#                      labelled <id> run: `cmake --build build --target <id>`, then
+#                      `ctest --test-dir build -L '^<id>$'`
 # and registers with CTest, all labelled <id> and <chN>:
 #   <id>.<feature>     one test per feature file, also labelled <feature>
 #   <id>.stage         the stage's own tests
@@ -40,7 +42,11 @@ function(add_stage id)
     # Every test file includes Catch2's 17,000-line header: parse it once for every stage.
     target_precompile_headers(${id}_tests REUSE_FROM ${catch_pch})
     test_files_together(${id}_tests)
-    add_custom_target(${id} DEPENDS ${program} ${id}_tests)
+    # Some tests run the program (--help, scene files, dumps): building the tests builds
+    # it, so they never run one older than its sources.
+    add_dependencies(${id}_tests ${program})
+    add_custom_target(${id})
+    add_dependencies(${id} ${program} ${id}_tests compare_png)
 
     foreach(feature IN LISTS STAGE_FEATURES)
       add_test(NAME ${id}.${feature} COMMAND ${id}_tests "-#" "[#${feature}_test]")
@@ -51,7 +57,8 @@ function(add_stage id)
       set_tests_properties(${id}.stage PROPERTIES LABELS "${labels};stage")
     endif()
   else()
-    add_custom_target(${id} DEPENDS ${program})
+    add_custom_target(${id})
+    add_dependencies(${id} ${program} compare_png)
   endif()
 
   add_test(NAME ${id}.pictures

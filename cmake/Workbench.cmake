@@ -113,7 +113,7 @@ function(add_workbench_stage stage folder)
     add_test(NAME ${id}.${test}
       COMMAND ${CMAKE_COMMAND} -DTEST=${id}.${test} "-DWHAT=${what}" "-DBOOK=${book}"
         -DLOG=${log_dir}/${target} -DPROGRAM=$<TARGET_FILE:${target}> "-DFILTER=${tag}"
-        -P ${script})
+        -DVERDICT=${log_dir}/verdicts/${test} -P ${script})
     # Work in progress can loop for ever: 15 minutes is far more than any of our tests needs.
     set_tests_properties(${id}.${test} PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
     list(LENGTH judged left)
@@ -123,7 +123,7 @@ function(add_workbench_stage stage folder)
     COMMAND ${CMAKE_COMMAND} -DTEST=${id}.pictures "-DWHAT=the program ${program}" "-DBOOK=${BOOK_${stage}}"
       -DLOG=${log_dir}/${program} -DPROGRAM=$<TARGET_FILE:${program}> -DCOMPARE=$<TARGET_FILE:compare_png>
       -DEXPECTED=${PROJECT_SOURCE_DIR}/${FOLDER}/expected -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
-      -P ${script})
+      -DVERDICT=${log_dir}/verdicts/pictures -P ${script})
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
 
   # The engine first, when it has sources: if it does not build, nothing else can.
@@ -143,9 +143,16 @@ function(add_workbench_stage stage folder)
 endfunction()
 
 # One test program: <source> against the reader's engine, as our stage's tests are built.
+# When its tests run the stage's program (stage_program.h, walkthrough.h), building it
+# builds the program too, so that --check never runs a program older than its sources;
+# the others do not wait for main.cpp.
 function(add_workbench_tests target source stage id program)
   add_executable(${target} EXCLUDE_FROM_ALL ${source})
   stage_test_program(${target} ${stage} ${id}_engine ${program})
+  file(READ ${source} text)
+  if(text MATCHES "stage_program\\.h|walkthrough\\.h|STAGE_PROGRAM")
+    add_dependencies(${target} ${program})
+  endif()
   shared_catch_pch(catch_pch)
   target_precompile_headers(${target} REUSE_FROM ${catch_pch})
 endfunction()

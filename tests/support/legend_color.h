@@ -7,6 +7,7 @@
 #include <string>
 
 #include "page.h"
+#include "color_text.h"
 
 namespace test {
 
