@@ -79,6 +79,18 @@ function(add_workbench_stage stage folder)
   add_custom_target(${id} DEPENDS ${program} compare_png)
 
   set(log_dir ${CMAKE_BINARY_DIR}/workbench/${id})
+  # What each feature checks, in the book's words (cmake/features.txt): a failure says it first.
+  file(STRINGS ${PROJECT_SOURCE_DIR}/cmake/features.txt feature_lines REGEX "^[a-z]")
+  foreach(line IN LISTS feature_lines)
+    string(REPLACE " | " ";" fields "${line}")
+    list(GET fields 0 name)
+    list(GET fields 1 whose)
+    list(GET fields 2 concept)
+    if(whose STREQUAL "ours")
+      set(concept "ours, not the book's: ${concept}")
+    endif()
+    set(concept_of_${name} "${concept}")
+  endforeach()
   # Not the chapter's label nor the features': `ctest -L ch3` stays our stages' tests.
   set(labels ${id} workbench)
   set(judged)  # test name, target, what it is, the book project it comes from; 4 per test
@@ -89,7 +101,7 @@ function(add_workbench_stage stage folder)
     else()  # older than this stage, whose project can still change what it expects (scene keys)
       set(book "${BOOK_${origin}}, and this stage is ${BOOK_${stage}}")
     endif()
-    list(APPEND judged ${feature} ${id}_test_${feature} "feature ${feature}" "${book}")
+    list(APPEND judged ${feature} ${id}_test_${feature} "${concept_of_${feature}} (feature ${feature})" "${book}")
     add_workbench_tests(${id}_test_${feature} ${PROJECT_SOURCE_DIR}/tests/features/${feature}_test.cpp
       ${stage} ${id} ${program})
   endforeach()
@@ -101,6 +113,7 @@ function(add_workbench_stage stage folder)
 
   set(targets ${program} compare_png)
   set(script ${PROJECT_SOURCE_DIR}/cmake/WorkbenchTest.cmake)
+  set(explain "bash;${PROJECT_SOURCE_DIR}/tools/workbench;--explain;${number}")
   list(LENGTH judged left)
   while(left GREATER 0)
     list(POP_FRONT judged test target what book)
@@ -113,7 +126,7 @@ function(add_workbench_stage stage folder)
     add_test(NAME ${id}.${test}
       COMMAND ${CMAKE_COMMAND} -DTEST=${id}.${test} "-DWHAT=${what}" "-DBOOK=${book}"
         -DLOG=${log_dir}/${target} -DPROGRAM=$<TARGET_FILE:${target}> "-DFILTER=${tag}"
-        -DVERDICT=${log_dir}/verdicts/${test} -P ${script})
+        -DVERDICT=${log_dir}/verdicts/${test} "-DEXPLAIN=${explain}" -P ${script})
     # Work in progress can loop for ever: 15 minutes is far more than any of our tests needs.
     set_tests_properties(${id}.${test} PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
     list(LENGTH judged left)

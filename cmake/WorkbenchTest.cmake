@@ -3,6 +3,7 @@
 # book's project to read, when the program did not build; otherwise it runs the tests
 # (FILTER, a Catch2 tag) or the default run whose pictures it compares (COMPARE).
 #   -DTEST= -DWHAT= -DBOOK= -DLOG=<log dir>/<target> -DPROGRAM= -DVERDICT=<file>
+#   [-DEXPLAIN=<command>: prints a build log's first error in the book's words]
 #   then -DFILTER=   or   -DCOMPARE= -DEXPECTED= -DACTUAL=
 # VERDICT gets "passed" or "failed", which tools/workbench --list reads (as --check
 # writes it too), so that listing the stages runs nothing.
@@ -31,8 +32,18 @@ if(NOT status EQUAL 0)
   else()
     set(WHAT "${WHAT} does not build yet")
   endif()
+  # Which of the book's names the error is about (tools/workbench --explain, names.md).
+  set(explained "")
+  if(DEFINED EXPLAIN)
+    execute_process(COMMAND ${EXPLAIN} ${LOG}.log OUTPUT_VARIABLE explained ERROR_QUIET)
+    string(REGEX REPLACE "\n$" "" explained "${explained}")
+    string(REPLACE "\n" "\n  " explained "${explained}")
+    if(explained)
+      set(explained "\n  ${explained}")
+    endif()
+  endif()
   fail("${WHAT}; it comes from ${BOOK}.
-  first error: ${first_error}
+  first error: ${first_error}${explained}
   everything the build said: ${LOG}.log")
 endif()
 

@@ -18,7 +18,9 @@ if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
     sys.exit(2)
 top = sys.argv[1]
 
-VALUE = r"(-?[0-9][0-9.e+-]*|true|false|nan|-?inf|'.'|\{\?\}|0x[0-9a-f]+|Approx\( -?[0-9][0-9.e+-]* \))"
+NUMBER = r"-?[0-9][0-9.e+-]*"
+VALUE = (r"(" + NUMBER + r"|true|false|nan|-?inf|'.'|\{\?\}|0x[0-9a-f]+|Approx\( " + NUMBER + r" \)"
+         r"|\(" + NUMBER + r", " + NUMBER + r"\)|\(\d+, \d+, \d+(, alpha \d+)?\)( [a-z]+)?)")
 BARE = re.compile(r"^\s*" + VALUE + r"(\s+(==|!=|<|>|<=|>=)\s+" + VALUE + r")?\s*$")
 mute = 0
 failures = 0

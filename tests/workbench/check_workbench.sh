@@ -138,7 +138,7 @@ for made in "3.3 ch3_collision/3.3_rectangle_collision rectangle_collision" \
   ((${#had[@]} >= 7)) || fail "$wb: the README lists only ${#had[@]} earlier features"
   expect "$wb.before.log" Failed "$wb.$new"
   expect "$wb.before.log" Passed "${had[@]}"
-  grep -q "^$wb.$new: feature $new fails (the checks above say where); it comes from book project $number, " \
+  grep -q "^$wb.$new: .* (feature $new) fails (the checks above say where); it comes from book project $number, " \
     "$wb.before.log" || fail "$wb.$new's failure does not name book project $number"
   ok "the failure names book project $number ($SECONDS s)"
 
