@@ -16,6 +16,8 @@
 
 #include <source_location>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "checked_at.h"
 
@@ -26,11 +28,35 @@ std::string shown(const Value& value) {
     return Catch::Detail::stringify(value);
 }
 
+namespace detail {
+// Whole numbers compare by value, signed or not (std::cmp_*): a count of 3 written as 3
+// equals an object count of type std::size_t. Everything else compares as it is.
+template <class A, class B>
+constexpr bool integers =
+    std::is_integral_v<A>&& std::is_integral_v<B> && !std::is_same_v<A, bool> && !std::is_same_v<B, bool>;
+template <class A, class B>
+bool same(const A& a, const B& b) {
+    if constexpr (integers<A, B>) return std::cmp_equal(a, b);
+    else return a == b;
+}
+template <class A, class B>
+bool less(const A& a, const B& b) {
+    if constexpr (integers<A, B>) return std::cmp_less(a, b);
+    else return a < b;
+}
+// Not written as !less: a NaN is neither at most nor at least anything.
+template <class A, class B>
+bool atMost(const A& a, const B& b) {
+    if constexpr (integers<A, B>) return std::cmp_less_equal(a, b);
+    else return a <= b;
+}
+}  // namespace detail
+
 // `got` == `expected`.
 template <class Expected, class Got>
 bool expectEqual(const char* quantity, const Expected& expected, const Got& got,
                  std::source_location where = std::source_location::current()) {
-    const bool passed = got == expected;
+    const bool passed = detail::same(got, expected);
     checkedAt(where, quantity, passed, "expected " + shown(expected) + ", got " + shown(got));
     return passed;
 }
@@ -39,7 +65,7 @@ bool expectEqual(const char* quantity, const Expected& expected, const Got& got,
 template <class Bound, class Got>
 bool expectAtMost(const char* quantity, const Bound& most, const Got& got,
                   std::source_location where = std::source_location::current()) {
-    const bool passed = got <= most;
+    const bool passed = detail::atMost(got, most);
     checkedAt(where, quantity, passed, "expected at most " + shown(most) + ", got " + shown(got));
     return passed;
 }
@@ -48,8 +74,26 @@ bool expectAtMost(const char* quantity, const Bound& most, const Got& got,
 template <class Bound, class Got>
 bool expectAtLeast(const char* quantity, const Bound& least, const Got& got,
                    std::source_location where = std::source_location::current()) {
-    const bool passed = got >= least;
+    const bool passed = detail::atMost(least, got);
     checkedAt(where, quantity, passed, "expected at least " + shown(least) + ", got " + shown(got));
+    return passed;
+}
+
+// `got` < `bound`.
+template <class Bound, class Got>
+bool expectBelow(const char* quantity, const Bound& bound, const Got& got,
+                 std::source_location where = std::source_location::current()) {
+    const bool passed = detail::less(got, bound);
+    checkedAt(where, quantity, passed, "expected below " + shown(bound) + ", got " + shown(got));
+    return passed;
+}
+
+// `got` > `bound`.
+template <class Bound, class Got>
+bool expectAbove(const char* quantity, const Bound& bound, const Got& got,
+                 std::source_location where = std::source_location::current()) {
+    const bool passed = detail::less(bound, got);
+    checkedAt(where, quantity, passed, "expected above " + shown(bound) + ", got " + shown(got));
     return passed;
 }
 
@@ -57,7 +101,8 @@ bool expectAtLeast(const char* quantity, const Bound& least, const Got& got,
 template <class Expected, class Got>
 void requireEqual(const char* quantity, const Expected& expected, const Got& got,
                   std::source_location where = std::source_location::current()) {
-    checkedAt(where, quantity, got == expected, "expected " + shown(expected) + ", got " + shown(got), true);
+    checkedAt(where, quantity, detail::same(got, expected), "expected " + shown(expected) + ", got " + shown(got),
+              true);
 }
 
 }  // namespace test
