@@ -6,6 +6,7 @@
 #include <string>
 
 #include "circle.h"
+#include "expect.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -40,8 +41,9 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
         if (entry.text.rfind("normal impulse", 0) == 0) normal_impulse = entry.color;
     }
     const browser::Image& pixels = page.window.document.canvas.pixels();
-    CHECK(pixels.at(270, 100) == normal_impulse);
-    CHECK(pixels.at(285, 100) == browser::colors::kWhite);
+    test::expectEqual("pixel (270, 100), on the normal impulse's arrow: the legend's colour", normal_impulse,
+                      pixels.at(270, 100));
+    test::expectEqual("pixel (285, 100), past the arrow's tip", browser::colors::kWhite, pixels.at(285, 100));
 }
 
 }  // namespace impulse_overlay_test
