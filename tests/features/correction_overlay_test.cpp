@@ -6,6 +6,7 @@
 
 #include "circle.h"
 #include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -36,10 +37,7 @@ TEST_CASE("correction overlay: the move of one pass, ten times longer, from the 
         return;
     if (!test::expectBelow("where the arrow ends, px: short of the pixel checked past it", 257.0, 238.5 + 11 * moved))
         return;
-    browser::Color correction{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("correction", 0) == 0) correction = entry.color;
-    }
+    const browser::Color correction = test::legendColor(page.window.document, "correction");
     test::expectEqual(
         "pixel (250, 100), on the correction arrow (ten times the move, from the moved centre): the legend's "
         "correction colour",

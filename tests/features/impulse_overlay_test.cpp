@@ -7,6 +7,7 @@
 
 #include "circle.h"
 #include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -36,10 +37,7 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
 
     // 72 x 2 px = 144 px, cut at 60: from the contact (between x = 218.5 and 220.5)
     // to x = 278.5 or 279.5. (270.5, 100.5) is on the shaft; (285.5, 100.5) past it.
-    browser::Color normal_impulse{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("normal impulse", 0) == 0) normal_impulse = entry.color;
-    }
+    const browser::Color normal_impulse = test::legendColor(page.window.document, "normal impulse");
     const browser::Image& pixels = page.window.document.canvas.pixels();
     test::expectEqual("pixel (270, 100), on the normal impulse's arrow: the legend's colour", normal_impulse,
                       pixels.at(270, 100));

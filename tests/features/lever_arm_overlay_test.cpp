@@ -4,6 +4,7 @@
 
 #include "circle.h"
 #include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -32,10 +33,7 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     test::expectEqual("the first shape's spin from the hit, rad/s: a head-on hit turns nothing", 0.0,
                       response.spin_first);
     test::expectEqual("the second shape's spin from the hit, rad/s", 0.0, response.spin_second);
-    browser::Color lever{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("lever arms", 0) == 0) lever = entry.color;
-    }
+    const browser::Color lever = test::legendColor(page.window.document, "lever arms");
     // The first arm runs along the row y = 100.5 from x = 200.5 to 218.5.
     test::expectEqual("pixel (205, 100), on the lever arm from the centre to the contact: the legend's colour", lever,
                       page.window.document.canvas.pixels().at(205, 100));
