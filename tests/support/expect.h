@@ -20,6 +20,8 @@
 #include <utility>
 
 #include "checked_at.h"
+#include "color_text.h"  // colours print as "(255, 165, 0) orange"
+#include "near.h"        // Vec2s print as "(x, y)"
 
 namespace test {
 
