@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "circle.h"
+#include "expect.h"
 #include "near.h"
 #include "rectangle.h"
 #include "same_state.h"
@@ -163,10 +164,12 @@ TEST_CASE("s5_5: the rest timer starts again from 0 when a shape moves") {
     world.floor();
     world.box(400);
     world.page.steps(20);
-    CHECK(world.page.core.object(1).sleep().rested_s > 0.25);
+    test::expectAbove("the resting box's rest timer after 20 steps, s", 0.25,
+                      world.page.core.object(1).sleep().rested_s);
     world.page.core.object(1).setVelocity({0, -50});  // thrown up, by no key
     world.page.steps(1);
-    CHECK(world.page.core.object(1).sleep().rested_s == 0.0);
+    test::expectEqual("the box's rest timer the step after it was thrown up, s: started again from 0", 0.0,
+                      world.page.core.object(1).sleep().rested_s);
 }
 
 TEST_CASE("s5_5: an island sleeps only when every shape in it has rested for time_to_sleep") {
@@ -450,9 +453,10 @@ TEST_CASE("s5_5: a shape's drift counts over the last time_to_sleep of its rest,
         run.page.steps(1);
         if (run.asleep(0)) asleep = step;
     }
-    CHECK(run.island(0) == run.island(1));
-    CHECK(asleep > kick + 29);
-    CHECK(asleep <= kick + 32);
+    test::expectEqual("the two touching circles in one island", run.island(1), run.island(0));
+    test::expectAbove("the step the island fell asleep: more than time_to_sleep (30 steps) after the kick at step 24",
+                      kick + 29, asleep);
+    test::expectAtMost("the step the island fell asleep: within 32 steps of the kick", kick + 32, asleep);
 }
 
 TEST_CASE("s5_5: a pile asleep costs no pair work: its pairs are passed over before their bound tests") {
