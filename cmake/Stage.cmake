@@ -24,6 +24,17 @@
 # can build a reader's own copy of the stage and judge it by the same tests.
 function(add_stage id)
   cmake_parse_arguments(PARSE_ARGV 1 STAGE "" "FOLDER;PROGRAM;CHAPTER" "FEATURES")
+  # Every feature says in cmake/features.txt what it checks, in the book's words, and
+  # whether it is the book's or ours: the workbench names a reader's checks by it.
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/features.txt)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/cmake/features.txt described REGEX "^[a-z_]+ [|] (book|ours) [|] .")
+  list(TRANSFORM described REPLACE " [|] .*" "")
+  foreach(feature IN LISTS STAGE_FEATURES)
+    if(NOT feature IN_LIST described)
+      message(FATAL_ERROR "add_stage(${id}): feature ${feature} has no line in cmake/features.txt "
+                          "(${feature} | book or ours | what it checks, in the book's words)")
+    endif()
+  endforeach()
   set_property(GLOBAL APPEND PROPERTY PHYSICS_STAGES ${id})
   foreach(key FOLDER PROGRAM CHAPTER FEATURES)
     set_property(GLOBAL PROPERTY PHYSICS_STAGE_${id}_${key} "${STAGE_${key}}")
