@@ -31,7 +31,7 @@ expect() {  # expect <log> <Passed|Failed> <test>...
 }
 # Runs stage <wb>'s tests into <log>; ctest's own status does not matter, the verdicts do.
 run_tests() { ctest --test-dir build -L "^$1\$" -j "$jobs" --output-on-failure >"$2" 2>&1 || true; }
-# The features add_stage lists for stage <id>, through tools/workbench's own reading.
+# The features stages.txt gives stage <id>, through tools/workbench's own reading.
 features_of() { grep -E "^- (new in|from the projects before)" "workbench/$1/README.md" | grep -oE 'wb_s[0-9_]+\.[a-z_]+' | grep -v '\.stage$'; }
 
 echo "== refusals"
@@ -99,7 +99,7 @@ refused "already exists" 3.3
 [[ -f workbench/3.3_rectangle_collision/README.md && -f workbench/4.3_collision_impulse/README.md ]] ||
   fail "no README"
 # names.md is one of the ready-made files: our 3.3's (3.3's overlay is 3.2's).
-diff -r --exclude=README.md --exclude=expected --exclude=main.cpp --exclude=names.md ch3_collision/3.2_circle_collision \
+diff -r --exclude=README.md --exclude=STEP --exclude=expected --exclude=main.cpp --exclude=names.md ch3_collision/3.2_circle_collision \
   workbench/3.3_rectangle_collision >/dev/null || fail "workbench/3.3 is not 3.2's copy"
 cmp -s ch3_collision/3.3_rectangle_collision/names.md workbench/3.3_rectangle_collision/names.md ||
   fail "workbench/3.3 has not our 3.3's names.md"
