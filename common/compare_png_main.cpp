@@ -8,8 +8,8 @@
 //
 // By default pictures match only pixel for pixel: the page is deterministic (a simulated
 // clock, seeded randomness, one rasterizer), so our stages need no slack, and any slack
-// lets a stage that lacks a feature drawing a few pixels (3.3 without 3.4's
-// rectangle-circle lines: about 130 pixels) pass the next stage's pictures. --channel
+// lets a stage that lacks a feature drawing a few pixels (a collision test the next
+// stage adds, whose lines take about 130 pixels) pass the next stage's pictures. --channel
 // and --share are for pictures made elsewhere.
 
 #include <algorithm>

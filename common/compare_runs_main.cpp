@@ -1,7 +1,7 @@
 // compare_runs PROGRAM SCENE LEFT RIGHT [--out DIR] [--crop X,Y,W,H] [--ghost FRAME] [-- OPTION...]
 //
 // Two settings of one scene, side by side, with one command. LEFT and RIGHT are JSON
-// objects of world keys ('{"solver": "book"}'), each laid over the scene file's
+// objects of world keys ('{"dt": 0.01}'), each laid over the scene file's
 // "world". The stage PROGRAM runs twice, unchanged, once per setting, with the same
 // OPTIONs (--frames, --every, --keys, --seed, --scale, ...); then every picture both
 // runs wrote is joined, the left run's canvas beside the right one's, each under its
@@ -12,7 +12,7 @@
 //   DIR/final.png, DIR/frame_NNNN.png   the joined pictures
 //   DIR/animation.gif               the joined frames, when there are two or more and
 //                                   the OPTIONs do not say --no-gif
-// With --crop X,Y,W,H each half shows only that rectangle of its canvas (in canvas
+// With --crop X,Y,W,H each half shows only that part of its canvas (in canvas
 // pixels, so --scale zooms into it). With --ghost each joined picture also shows the first frame faintly under it
 // (needs --every), so that whatever moved since the start shows twice. With --trail each
 // joined picture shows every earlier frame the runs saved faintly under it (the final
@@ -103,7 +103,7 @@ json scene_with(json scene, const std::string& setting, const std::string& side)
     const json keys = json::parse(setting, nullptr, false);
     if (!keys.is_object()) {
         throw Stop{kRefused, "the " + side + " setting " + browser::in_quotes(setting) +
-                                 " is not a JSON object of world keys, e.g. '{\"solver\": \"book\"}'"};
+                                 " is not a JSON object of world keys, e.g. '{\"dt\": 0.01}'"};
     }
     if (!scene.contains("world")) scene["world"] = json::object();
     for (const auto& [key, value] : keys.items()) scene["world"][key] = value;
@@ -275,7 +275,7 @@ int main(int argc, char** argv) {
         "Runs a stage program on one scene with two settings of its world keys and joins "
         "their pictures side by side, each half labelled with its setting.",
         kProgram};
-    app.add_option("PROGRAM", request.program, "the stage program, e.g. build/s5_4_contact_solver")->required();
+    app.add_option("PROGRAM", request.program, "the stage program, e.g. build/sX_Y_name")->required();
     app.add_option("SCENE", request.scene, "the scene file both runs start from")->required();
     app.add_option("LEFT", request.settings[0], "world keys for the left run, as a JSON object")->required();
     app.add_option("RIGHT", request.settings[1], "world keys for the right run, as a JSON object")->required();

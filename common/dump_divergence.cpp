@@ -1,13 +1,13 @@
 #include "dump_divergence.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "message_text.h"
+#include "state_dump.h"  // is_plain_word
 
 namespace browser {
 
@@ -62,49 +62,6 @@ std::optional<std::string_view> first_differing_field(const DumpRow& a, const Du
 std::size_t field_index(std::string_view field) {
     return static_cast<std::size_t>(std::find(kDumpFields.begin(), kDumpFields.end(), field) - kDumpFields.begin());
 }
-
-// Book projects as one number: "4.4" is 44. Nothing for a text of another form.
-std::optional<int> stage_number(std::string_view stage) {
-    if (stage.size() != 3 || stage[1] != '.') return std::nullopt;
-    const auto chapter = read_number<int>(stage.substr(0, 1));
-    const auto project = read_number<int>(stage.substr(2, 1));
-    if (!chapter || !project) return std::nullopt;
-    return *chapter * 10 + *project;
-}
-
-bool a_body_left(const Divergence& d) {
-    return d.kind == DivergenceKind::extra_body || d.bodies_a < d.bodies_before_a || d.bodies_b < d.bodies_before_b;
-}
-
-// What the dumps can show of each errata entry, from the stage that has it on: the
-// numbers of a circle (its inertia), a body gone from the list (the book's removal
-// during the update loop), or a run that stops updating (the book's frozen page).
-struct Entry {
-    int from_stage;
-    KnownDifference difference;
-    bool (*fits)(const Divergence&);
-};
-
-const Entry kEntries[] = {
-    {51,
-     {"The selection survives the removal of the selected shape (fixed, 5.1)",
-      "one run stops updating while the other goes on: the book's page freezes once the selected shape "
-      "has left the canvas"},
-     [](const Divergence& d) { return d.kind == DivergenceKind::steps_end; }},
-    {51,
-     {"Out-of-bounds removal no longer skips the next shape's step (5.1)",
-      "a shape left the canvas in this step: in the book's run the shape after it misses this update"},
-     a_body_left},
-    {44,
-     {"Circle inertia (fixed, 4.1 on)",
-      "a circle's numbers differ: the book's circle keeps m r^2 / 12 where its inverse inertia belongs, "
-      "which the angular impulse of 4.4 on uses"},
-     [](const Divergence& d) {
-         return d.kind == DivergenceKind::value &&
-                std::any_of(d.differing.begin(), d.differing.end(),
-                            [](const DifferingBody& body) { return body.shape == "circle"; });
-     }},
-};
 
 std::string number_text(double value) {
     std::ostringstream text;
@@ -169,7 +126,7 @@ std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name) {
         row.step = *step;
         row.index = *index;
         row.shape = parts[2];
-        if (row.shape != "rectangle" && row.shape != "circle") throw refuse("the shape must be rectangle or circle");
+        if (!is_plain_word(row.shape)) throw refuse("the shape must be a plain word (lower-case letters, digits, _)");
         for (std::size_t f = 0; f < kDumpFields.size(); ++f) {
             const auto value = read_number<double>(parts[3 + f]);
             if (!value) throw refuse(std::string(kDumpFields[f]) + " is not a number");
@@ -249,35 +206,8 @@ std::optional<Divergence> first_divergence(const std::vector<DumpRow>& a, const 
     return std::nullopt;
 }
 
-std::optional<KnownDifference> known_difference(const Divergence& divergence, std::string_view stage) {
-    const std::optional<int> number = stage_number(stage);
-    if (!number || divergence.step == 0) return std::nullopt;
-    for (const Entry& entry : kEntries) {
-        if (*number >= entry.from_stage && entry.fits(divergence)) return entry.difference;
-    }
-    return std::nullopt;
-}
-
-std::vector<KnownDifference> known_differences() {
-    std::vector<KnownDifference> all;
-    for (const Entry& entry : kEntries) all.push_back(entry.difference);
-    return all;
-}
-
-std::string heading_anchor(std::string_view heading) {
-    std::string anchor;
-    for (const char c : heading) {
-        if (c == ' ') {
-            anchor += '-';
-        } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') {
-            anchor += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        }
-    }
-    return anchor;
-}
-
 std::string describe(const Divergence& divergence, std::string_view name_a, std::string_view name_b,
-                     DumpTolerance tolerance, std::string_view stage) {
+                     DumpTolerance tolerance) {
     std::string text = "first divergence: " + what_differs(divergence, name_a, name_b, tolerance) + "\n";
     if (divergence.differing.size() > 1) {
         text += "at that step these differ too:";
@@ -292,13 +222,7 @@ std::string describe(const Divergence& divergence, std::string_view name_a, std:
     if (divergence.step == 0) {
         return text + "the two runs did not start from the same world: build both from the same scene file\n";
     }
-    if (stage.empty()) return text + "(give --stage X.Y to look the difference up in docs/errata.md)\n";
-    if (const auto known = known_difference(divergence, stage)) {
-        return text + "known difference: docs/errata.md#" + heading_anchor(known->heading) + " (\"" +
-               std::string(known->heading) + "\"): " + std::string(known->sign) + "\n";
-    }
-    return text + "no entry of docs/errata.md explains this for " + std::string(stage) +
-           ": a difference to look into\n";
+    return text;
 }
 
 }  // namespace browser

@@ -2,8 +2,8 @@
 // Two state dumps (--dump, state_dump.h) side by side: where do they first part ways?
 // One comes from our stage, the other from the book's own JavaScript run on the same
 // scene and keys by tools/book_runner (docs/book_runner.md). The answer names the step,
-// the body and the field, and, where the difference is one we know and keep or fix on
-// purpose, the docs/errata.md entry that explains it.
+// the body and the field; which of the known differences from the book explains it is
+// the errata's to say (errata/known_differences.h).
 
 #include <array>
 #include <cstddef>
@@ -48,7 +48,7 @@ bool agree(double a, double b, DumpTolerance tolerance);
 
 enum class DivergenceKind {
     value,       // a number differs beyond the tolerance
-    shape,       // body `index` is a rectangle in one dump, a circle in the other
+    shape,       // body `index` is of one kind in one dump, of another in the other
     extra_body,  // one dump has more bodies at this step
     steps_end,   // one dump has no rows for this step: its run did not update any more
 };
@@ -76,26 +76,10 @@ struct Divergence {
 std::optional<Divergence> first_divergence(const std::vector<DumpRow>& a, const std::vector<DumpRow>& b,
                                            DumpTolerance tolerance = {});
 
-// An errata entry that explains a divergence: its heading in docs/errata.md, exactly as
-// written after "### ", and what in the divergence points to it.
-struct KnownDifference {
-    std::string_view heading;
-    std::string_view sign;
-};
-
-// The entry that explains `divergence` for the book project `stage` ("4.4", "5.1"), or
-// nothing. It is the likely cause, told by which stage, shape and field, not a proof.
-std::optional<KnownDifference> known_difference(const Divergence& divergence, std::string_view stage);
-// Every entry the table knows, for the test that each heading is in docs/errata.md.
-std::vector<KnownDifference> known_differences();
-
-// The anchor GitHub gives a heading: lower case, spaces as hyphens, no punctuation
-// ("Circle inertia (fixed, 4.1 on)" -> "circle-inertia-fixed-41-on").
-std::string heading_anchor(std::string_view heading);
-
-// The report's lines: where, what, the other bodies that differ at that step, and the
-// errata entry when one is known. `name_a` and `name_b` name the two dumps.
+// The report's lines: where, what, and the other bodies that differ at that step; for a
+// divergence at step 0, that the two runs did not start alike. `name_a` and `name_b`
+// name the two dumps.
 std::string describe(const Divergence& divergence, std::string_view name_a, std::string_view name_b,
-                     DumpTolerance tolerance, std::string_view stage);
+                     DumpTolerance tolerance);
 
 }  // namespace browser

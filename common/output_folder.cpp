@@ -85,7 +85,7 @@ void write_manifest(const fs::path& folder) {
 // for "-" + std::to_string(...).
 }  // namespace
 
-// "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
+// "out/x/" and "out/x" name the same folder; without the trailing separator
 // the staging folder would land inside it rather than beside it.
 fs::path OutputFolder::normalized(const fs::path& given) {
     fs::path path = given.lexically_normal();

@@ -52,7 +52,7 @@ public:
 
     // Where the run writes its files until commit().
     const std::filesystem::path& staging() const { return staging_; }
-    // The folder as given, without a trailing separator ("out/s1_1/" is "out/s1_1").
+    // The folder as given, without a trailing separator ("out/x/" is "out/x").
     const std::filesystem::path& out() const { return out_; }
     static std::filesystem::path normalized(const std::filesystem::path& given);
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "page.h"
+#include "page.h"  // kPanelWidth
+#include "text.h"
 
 namespace browser {
 

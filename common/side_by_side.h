@@ -13,7 +13,7 @@ namespace browser {
 // with the frame round it.
 Image canvas_of(const Image& page, int scale);
 
-// The rectangle of `picture` at (x, y), width x height pixels; what lies outside
+// The part of `picture` at (x, y), width x height pixels; what lies outside
 // `picture` is white.
 Image cropped(const Image& picture, int x, int y, int width, int height);
 

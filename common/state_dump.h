@@ -54,10 +54,11 @@ public:
     StateDump(const StateDump&) = delete;
     StateDump& operator=(const StateDump&) = delete;
 
-    // `shape` is "rectangle" or "circle" (shape_name() in scene_file.h spells them);
-    // anything else throws std::invalid_argument rather than write a row tools misread.
-    // Throws FileError when the write fails, std::logic_error after finish().
-    void row(long step, std::size_t index, std::string_view shape, Vec2 center, double angle, Vec2 velocity,
+    // `kind` is the body's kind as the stage's scene files spell it, a plain word
+    // (lower-case letters, digits, '_'); anything else throws std::invalid_argument
+    // rather than write a row tools misread. Throws FileError when the write fails,
+    // std::logic_error after finish().
+    void row(long step, std::size_t index, std::string_view kind, lib::Vec2 center, double angle, lib::Vec2 velocity,
              double angular_velocity);
 
     // Completes the file and renames it to `path`. Throws FileError, and removes the
@@ -80,8 +81,11 @@ private:
 
 // A step that made a number no double can be: the run stops, naming the body and the
 // step, and writes nothing (exit status 3, docs/scene_format.md).
+// Whether `text` is a plain word: lower-case letters, digits and '_', at least one.
+bool is_plain_word(std::string_view text);
+
 struct NonFiniteState : std::runtime_error {
-    NonFiniteState(long step, std::size_t index, std::string_view shape);
+    NonFiniteState(long step, std::size_t index, std::string_view kind);
 };
 
 }  // namespace browser

@@ -31,9 +31,9 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
     page.core.runGameLoop();
 
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
-    CHECK_THAT(response.normal_impulse, test::near(browser::Vec2{72, 0}, 1e-9));
-    CHECK_THAT(response.tangent_impulse, test::near(browser::Vec2{0, 0}, 1e-9));
-    CHECK_THAT(ball.velocity(), test::near(browser::Vec2{12, 0}, 1e-9));
+    CHECK_THAT(response.normal_impulse, test::near(lib::Vec2{72, 0}, 1e-9));
+    CHECK_THAT(response.tangent_impulse, test::near(lib::Vec2{0, 0}, 1e-9));
+    CHECK_THAT(ball.velocity(), test::near(lib::Vec2{12, 0}, 1e-9));
 
     // 72 x 2 px = 144 px, cut at 60: from the contact (between x = 218.5 and 220.5)
     // to x = 278.5 or 279.5. (270.5, 100.5) is on the shaft; (285.5, 100.5) past it.

@@ -27,9 +27,9 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
-    CHECK_THAT(response.contact, test::near(browser::Vec2{218.5, 100.5}, 1e-9));
-    CHECK_THAT(response.arm_first, test::near(browser::Vec2{18, 0}, 1e-9));
-    CHECK_THAT(response.arm_second, test::near(browser::Vec2{-20, 0}, 1e-9));
+    CHECK_THAT(response.contact, test::near(lib::Vec2{218.5, 100.5}, 1e-9));
+    CHECK_THAT(response.arm_first, test::near(lib::Vec2{18, 0}, 1e-9));
+    CHECK_THAT(response.arm_second, test::near(lib::Vec2{-20, 0}, 1e-9));
     test::expectEqual("the first shape's spin from the hit, rad/s: a head-on hit turns nothing", 0.0,
                       response.spin_first);
     test::expectEqual("the second shape's spin from the hit, rad/s", 0.0, response.spin_second);

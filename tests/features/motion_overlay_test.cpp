@@ -34,14 +34,14 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     // Halfway, at -pi/2 + 0.5, it passes (307.21, 188.22): that pixel is mostly the
     // velocity colour. The same radius a quarter turn before the start is untouched.
     const auto on_arc = [](double angle) {
-        return browser::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
+        return lib::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
     };
-    const browser::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
+    const lib::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
     const browser::Color arc = pixels.at(static_cast<int>(middle.x), static_cast<int>(middle.y));
     // white would be 255 in each channel
     test::expectBelow("the spin arc's pixel halfway round, green channel: drawn (white would be 255)", 200, int{arc.g});
     test::expectBelow("the spin arc's pixel halfway round, red channel: drawn", 200, int{arc.r});
-    const browser::Vec2 before = on_arc(-std::acos(-1.0));
+    const lib::Vec2 before = on_arc(-std::acos(-1.0));
     test::expectEqual("the pixel on the arc's radius a quarter turn before its start: untouched",
                       browser::colors::kWhite, pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)));
 }

@@ -27,9 +27,9 @@
 namespace world_knobs_test {
 
 namespace fs = std::filesystem;
-using browser::BodyDescription;
 using browser::Key;
-using browser::ShapeKind;
+using engine::BodyDescription;
+using engine::ShapeType;
 using engine::Vec2;
 using engine::WorldSettings;
 
@@ -319,20 +319,20 @@ TEST_CASE("world knobs: rotation off keeps every angle and angular velocity at e
     // onto each other: with rotation they tumble (checked, so the scene does test
     // something); without it nothing turns, ever.
     std::vector<BodyDescription> bodies{
-        {.shape = ShapeKind::rectangle, .center = {400, 300}, .width = 500, .height = 20, .mass = 0, .angle = 0.3},
-        {.shape = ShapeKind::circle, .center = {250, 200}, .radius = 15, .mass = 0},
+        {.shape = ShapeType::Rectangle, .center = {400, 300}, .width = 500, .height = 20, .mass = 0, .angle = 0.3},
+        {.shape = ShapeType::Circle, .center = {250, 200}, .radius = 15, .mass = 0},
     };
     test::RandomShapes random(11);
     for (int i = 0; i < 12; ++i) {
         const Vec2 center{random.uniform(200, 600), random.uniform(20, 180)};
         if (i % 2 == 0) {
-            bodies.push_back({.shape = ShapeKind::rectangle,
+            bodies.push_back({.shape = ShapeType::Rectangle,
                               .center = center,
                               .width = random.uniform(10, 40),
                               .height = random.uniform(10, 40),
                               .mass = random.uniform(1, 10)});
         } else {
-            bodies.push_back({.shape = ShapeKind::circle, .center = center, .radius = random.uniform(5, 20)});
+            bodies.push_back({.shape = ShapeType::Circle, .center = center, .radius = random.uniform(5, 20)});
         }
     }
     for (const bool rotation : {true, false}) {

@@ -17,11 +17,13 @@
 #include "continuous.h"
 #include "expect.h"
 #include "near.h"
+#include "page_world.h"
 #include "random.h"
 #include "rectangle.h"
 #include "same_state.h"
 #include "scene_io.h"
 #include "scratch_folder.h"
+#include "stage_program.h"
 #include "world_fixture.h"
 #include "world_from_scene.h"
 
@@ -310,6 +312,59 @@ TEST_CASE("s5_6: P turns continuous collision off and on live") {
     CHECK_FALSE(page.core.settings().continuous);
     page.press(browser::Key::P);
     CHECK(page.core.settings().continuous);
+}
+
+}  // namespace s5_6_test
+
+namespace s5_6_test {
+
+namespace {
+
+// Issue 36's scene: 2,500 bullets, plates of 5 x 1 px at 1e6 px/s spinning at 1e4 rad/s,
+// in rows. Every sweep of every bullet against every shape measures gaps again and
+// again: about 5.7 s of CPU a step, and the budget, which counted no sweep, let
+// --frames 1590 through: some 2.5 hours.
+std::string spinningBullets(bool continuous) {
+    std::string text = R"({"world": {"continuous": )";
+    text += continuous ? "true" : "false";
+    text += R"(}, "bodies": [)";
+    for (int i = 0; i < 2500; ++i) {
+        text += i == 0 ? "" : ",";
+        text += R"({"shape": "rectangle", "width": 5, "height": 1, "velocity": [1e6, 0], "angular_velocity": 1e4, )";
+        text += R"("bullet": true, "center": [)" + std::to_string(20 + (i % 50) * 15) + ", " +
+                std::to_string(20 + (i / 50) * 8) + "]}";
+    }
+    return text + "]}";
+}
+
+browser::WorldCost costOf(const engine::Scene& scene) {
+    test::WorldFixture page(scene.world);
+    engine::buildScene(page.core, scene.bodies);
+    return engine::worldCost(page.core, browser::KeyScript());
+}
+
+}  // namespace
+
+TEST_CASE("s5_6: the run's budget counts the sweeps: 2,500 spinning bullets are refused up front (issue 36)") {
+    const test::ScratchFolder folder("s5_6-sweep-budget");
+    const fs::path scene = folder.write("bullets.json", spinningBullets(true));
+    test::checkRefused(
+        folder,
+        "--frames 3 --every 0 --no-gif --scene " + test::quoted(scene) + " --out " + test::quoted(folder.path / "out"),
+        "the run is too long: 3 frames of up to 2500 shapes may cost ");
+
+    // What the sweeps add to a step: each of the 2,500 bullets swept against each of the
+    // 2,500 shapes, every one of those up to kMaxAdvances gaps measured, each dearer than a
+    // pair test.
+    const browser::WorldCost on = costOf(engine::readScene(spinningBullets(true), "on"));
+    const browser::WorldCost off = costOf(engine::readScene(spinningBullets(false), "off"));
+    CHECK(on.step_work - off.step_work >= 2500.0 * 2500.0 * engine::kMaxAdvances);
+    // With continuous collision off the same 3 frames fit the budget: 0.04 s a step.
+    browser::Options three;
+    three.frames = 3;
+    three.frame_ms = 1000.0 / 60.0;
+    CHECK(browser::work_bound(off, three) <= browser::kMaxWork);
+    CHECK(browser::work_bound(on, three) > browser::kMaxWork);
 }
 
 }  // namespace s5_6_test

@@ -30,10 +30,10 @@ void buildBookScene(Core& core, browser::Random& random) {
 // One of the cool demo's random shapes (5.1 on), as the book's MyGame.js draws it.
 struct DemoShape {
     bool is_box;
-    browser::Vec2 center;
+    lib::Vec2 center;
     double width = 0, height = 0, radius = 0;
     double mass, friction, restitution;
-    browser::Vec2 velocity;
+    lib::Vec2 velocity;
 };
 
 // The demo's ten boxes and ten balls, drawn from `random` as the book's constructor

@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "dump_divergence.h"
+#include "known_differences.h"
 
 namespace {
 constexpr int kAgree = 0, kDiffer = 1, kTrouble = 2;
@@ -51,7 +52,8 @@ int main(int argc, char** argv) {
             std::cout << "no divergence: " << file_a << " and " << file_b << " agree at every step\n";
             return kAgree;
         }
-        std::cout << browser::describe(*divergence, file_a, file_b, tolerance, stage);
+        std::cout << browser::describe(*divergence, file_a, file_b, tolerance);
+        if (divergence->step > 0) std::cout << errata::explanation(*divergence, stage);
         return kDiffer;
     } catch (const browser::DumpError& error) {
         std::cerr << "first_divergence: " << error.what() << '\n';
