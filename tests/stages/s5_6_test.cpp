@@ -15,6 +15,7 @@
 
 #include "circle.h"
 #include "continuous.h"
+#include "expect.h"
 #include "near.h"
 #include "page_world.h"
 #include "random.h"
@@ -168,12 +169,14 @@ TEST_CASE("s5_6: time of impact of a spinning rectangle: stopped in the wall, by
         const Vec2 offset{500, uniform(random, -300, 300)};
         const std::optional<double> t = impactOf(rectangle, offset, wall, turn);
         INFO("shot " << shot);
-        REQUIRE(t);
+        test::requireEqual("a time of impact found for the turning rectangle swept at the 2 px wall", true,
+                           t.has_value());
         rectangle.move(offset * *t);
         rectangle.rotate(turn * *t);
         const std::optional<engine::CollisionInfo> info = rectangle.collisionTest(wall);
-        REQUIRE(info);
-        CHECK(info->depth() <= kDepth * std::numbers::sqrt2 + 1e-9);
+        test::requireEqual("a collision of the rectangle and the wall at the time of impact", true, info.has_value());
+        test::expectAtMost("the depth at the time of impact, px: within the sweep's target, times sqrt 2",
+                           kDepth * std::numbers::sqrt2 + 1e-9, info->depth());
     }
 }
 
@@ -187,13 +190,17 @@ TEST_CASE("s5_6: a shape is fast when its farthest point moves more than half it
     CHECK_FALSE(engine::isFast(ball, {0, 0}, 100.0));  // a circle's spin moves no outline
 
     const engine::Rectangle plank({0, 0}, 40, 10);  // extent 5: fast beyond 2.5 px
-    CHECK(engine::smallestExtent(plank) == 5.0);
-    CHECK_FALSE(engine::isFast(plank, {2.5, 0}, 0.0));
-    CHECK(engine::isFast(plank, {2.51, 0}, 0.0));
+    test::expectEqual("the 40 x 10 plank's smallest extent, px: half its thickness", 5.0,
+                      engine::smallestExtent(plank));
+    test::expectEqual("fast (swept) at 2.5 px a step: half its extent, not more", false,
+                      engine::isFast(plank, {2.5, 0}, 0.0));
+    test::expectEqual("fast (swept) at 2.51 px a step", true, engine::isFast(plank, {2.51, 0}, 0.0));
     // Its corners are sqrt(20^2 + 5^2) = 20.6 px out: a turn of 0.12 rad moves them 2.47
     // px, of 0.125 rad 2.58 px.
-    CHECK_FALSE(engine::isFast(plank, {0, 0}, 0.12));
-    CHECK(engine::isFast(plank, {0, 0}, 0.125));
+    test::expectEqual("fast (swept) turning 0.12 rad a step: its corners move 2.47 px", false,
+                      engine::isFast(plank, {0, 0}, 0.12));
+    test::expectEqual("fast (swept) turning 0.125 rad a step: its corners move 2.58 px", true,
+                      engine::isFast(plank, {0, 0}, 0.125));
 }
 
 // =================================================================================
@@ -244,8 +251,8 @@ TEST_CASE("s5_6: a bullet does not pass a 2 px plank that is free to move; a fas
         through_as_bullet += shotThroughPlank(bullets, true) ? 1 : 0;
         through_as_shape += shotThroughPlank(shapes, false) ? 1 : 0;
     }
-    CHECK(through_as_bullet == 0);
-    CHECK(through_as_shape > 150);
+    test::expectEqual("shots of 200 through the 2 px plank as bullets", 0, through_as_bullet);
+    test::expectAbove("shots of 200 through the plank as shapes that are no bullets", 150, through_as_shape);
 }
 
 // =================================================================================
