@@ -8,12 +8,16 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "input_file.h"
 
 namespace browser {
 
@@ -32,8 +36,49 @@ struct DumpError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Reads a dump, checking its shape: the header, nine columns, steps that never go
-// back, and each step's bodies numbered 0, 1, 2... `name` is what messages call it.
+// A dump read step by step, checking its shape: a header naming the columns (step,
+// index, shape and kDumpFields, in any order; a column it does not know, such as a
+// body's id, is read past), every row with as many fields, steps that never go back,
+// each step's bodies numbered 0, 1, 2... Memory holds one step, and a step at most
+// kMostRowsInStep bodies. `name` is what messages call it.
+inline constexpr std::size_t kMostRowsInStep = 1'000'000;
+class DumpReader {
+public:
+    // `next_line` gives the next line without its '\n', false at the end.
+    DumpReader(std::function<bool(std::string&)> next_line, std::string_view name);
+    // The next step's rows, in index order; false when there are no more steps.
+    bool next_step(std::vector<DumpRow>& rows);
+
+private:
+    DumpError refuse(const std::string& problem) const;
+    std::optional<DumpRow> read_row();
+
+    std::function<bool(std::string&)> next_line_;
+    std::string name_;
+    long line_number_ = 1;
+    std::size_t columns_ = 0, step_at_ = 0, index_at_ = 0, shape_at_ = 0;
+    std::array<std::size_t, kDumpFields.size()> field_at_{};
+    struct Last {
+        long step;
+        std::size_t index;
+    };
+    std::optional<Last> last_;
+    std::optional<DumpRow> ahead_;  // the first row of the next step, read already
+};
+
+// A dump file read as above (input_file.h: a regular file only, lines of at most
+// kLongestDumpLine bytes). Refusals of the file are DumpErrors too.
+inline constexpr std::size_t kLongestDumpLine = 4096;
+struct DumpFile {
+    explicit DumpFile(const std::filesystem::path& file);
+    std::unique_ptr<LineReader> lines;
+    DumpReader reader;
+
+private:
+    static std::unique_ptr<LineReader> open(const std::filesystem::path& file);
+};
+
+// A whole dump in memory, for tests and small dumps.
 std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name);
 std::vector<DumpRow> read_dump(const std::filesystem::path& file);
 
@@ -74,6 +119,10 @@ struct Divergence {
 };
 
 std::optional<Divergence> first_divergence(const std::vector<DumpRow>& a, const std::vector<DumpRow>& b,
+                                           DumpTolerance tolerance = {});
+// The same for two dump files, read side by side one step at a time: memory holds a
+// step of each, however long the runs were. Throws DumpError for a file that is no dump.
+std::optional<Divergence> first_divergence(const std::filesystem::path& a, const std::filesystem::path& b,
                                            DumpTolerance tolerance = {});
 
 // The report's lines: where, what, and the other bodies that differ at that step; for a

@@ -181,3 +181,31 @@ TEST_CASE("every errata entry the table names is a heading of docs/errata.md", "
     CHECK(errata::heading_anchor("Out-of-bounds removal no longer skips the next shape's step (5.1)") ==
           "out-of-bounds-removal-no-longer-skips-the-next-shapes-step-51");
 }
+
+TEST_CASE("an infinity is the same as itself only, never a finite number, however large the tolerance",
+          "[first_divergence_test]") {
+    // The book runner writes inf when the book's code overflows (issue 36: called equal).
+    const auto finite = dump(kStart + "1,0,rectangle,100,50.1,0,0,1,0\n" + kStep1Circle);
+    const auto overflowed = dump(kStart + "1,0,rectangle,100,inf,0,0,1,0\n" + kStep1Circle);
+    const auto below = dump(kStart + "1,0,rectangle,100,-inf,0,0,1,0\n" + kStep1Circle);
+    const browser::DumpTolerance loose{.absolute = 1e6, .relative = 1};
+    const auto found = browser::first_divergence(finite, overflowed, loose);
+    REQUIRE(found.has_value());
+    CHECK(found->field == "cy");
+    CHECK_THAT(browser::describe(*found, "a", "b", loose), !Catch::Contains("nan"));
+    // inf against itself is no divergence ("they differ by nan" once said it was).
+    CHECK_FALSE(browser::first_divergence(overflowed, overflowed).has_value());
+    REQUIRE(browser::first_divergence(overflowed, below).has_value());
+}
+
+TEST_CASE("a dump may hold columns first_divergence does not compare, in any place", "[first_divergence_test]") {
+    // A body's id, as a later stage's dump may add (the physics fields are what is compared).
+    std::istringstream with_id(
+        "step,id,index,shape,cx,cy,angle,vx,vy,angular_velocity\n"
+        "0,7,0,rectangle,100,50,0,0,0,0\n0,8,1,circle,300,60,0,6,0,0.5\n"
+        "1,7,0,rectangle,100,50.1,0,0,1,0\n1,8,1,circle,300.1,60,0.01,6,0,0.5\n");
+    const auto a = browser::parse_dump(with_id, "id.csv");
+    CHECK_FALSE(browser::first_divergence(a, dump(kStart + kStep1Box + kStep1Circle)).has_value());
+    std::istringstream missing("step,index,shape,cx,cy,angle,vx,vy\n");
+    CHECK_THROWS_WITH(browser::parse_dump(missing, "short.csv"), Catch::StartsWith("short.csv:1: not a state dump"));
+}

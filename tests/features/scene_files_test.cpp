@@ -597,8 +597,8 @@ TEST_CASE("hostile input: SIGINT and SIGTERM end a run with no staging folder or
     for (const int signal : {SIGINT, SIGTERM}) {
         INFO("signal " << signal);
         const test::ScratchFolder folder("hostile-signal");
-        // A long run (about a minute): stopped as soon as its staging folder shows.
-        const pid_t pid = test::startStageProgram(folder, "--frames 100000 --every 0 --no-gif --keys '' --dump " +
+        // A long run (half a minute): stopped as soon as its staging folder shows.
+        const pid_t pid = test::startStageProgram(folder, "--frames 50000 --every 0 --no-gif --keys '' --dump " +
                                                               test::quoted(folder.path / "dump.csv") + outIn(folder));
         REQUIRE(pid > 0);
         const fs::path staging = folder.path / ("out.partial-" + std::to_string(pid));

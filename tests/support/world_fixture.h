@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "browser.h"
+#include "color_text.h"
 #include "circle.h"
 #include "core.h"
 #include "random.h"
