@@ -12,8 +12,8 @@
 namespace bench::piles {
 namespace {
 
-using browser::BodyDescription;
-using browser::ShapeKind;
+using bench::BodyDescription;
+using bench::Shape;
 
 constexpr double kWall = 20.0;    // px: thickness of the floor and the walls
 constexpr double kMargin = 20.0;  // px: free canvas around the box
@@ -38,12 +38,12 @@ BodyDescription shape(browser::Random& random, const PileRecipe& recipe, Vec2 ce
     const double size = uniform(random, recipe.smallest, recipe.largest);
     const bool square = recipe.kinds == Kinds::squares || (recipe.kinds == Kinds::mixed && random.next() < 0.5);
     if (square) {
-        body.shape = ShapeKind::rectangle;
+        body.shape = Shape::rectangle;
         body.width = body.height = size;
         body.angle = uniform(random, 0.0, std::numbers::pi / 2);
         body.mass = size * size / kUnitArea;
     } else {
-        body.shape = ShapeKind::circle;
+        body.shape = Shape::circle;
         body.radius = size / 2;
         body.mass = std::numbers::pi * body.radius * body.radius / kUnitArea;
     }
@@ -79,7 +79,7 @@ SceneDescription pile(const PileRecipe& recipe) {
     const double w = scene.world.width;
     const double h = scene.world.height;
     const auto wall = [&](Vec2 center, double width, double height) {
-        scene.bodies.push_back({.shape = ShapeKind::rectangle,
+        scene.bodies.push_back({.shape = Shape::rectangle,
                                 .center = center,
                                 .width = width,
                                 .height = height,

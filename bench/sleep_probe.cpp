@@ -110,12 +110,14 @@ engine::Scene sceneOf(const Options& options) {
     if (!options.scene_file.empty()) {
         scene = engine::loadScene(options.scene_file);
     } else {
-        scene.bodies =
-            browser::read_scene_text(bench::scene_json(pileScene(options)), "pile", engine::worldKeys(scene.world));
+        scene = engine::readScene(bench::scene_json(pileScene(options)), "pile");
     }
     if (!options.world_json.empty()) {
+        // The world's keys over the scene's world, so a key it leaves out keeps the scene's.
+        std::vector<engine::BodyDescription> no_bodies;
+        const browser::SceneList bodies = engine::bodyList(no_bodies);
         browser::read_scene_text(R"({"world": )" + options.world_json + R"(, "bodies": []})", "--world",
-                                 engine::worldKeys(scene.world));
+                                 engine::worldKeys(scene.world), {&bodies, 1});
     }
     return scene;
 }

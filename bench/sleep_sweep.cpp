@@ -158,8 +158,7 @@ double movingCount(const bench::SceneDescription& scene) {
 // 99 % of the pile has slept for kAsleepFor or the cap; then the settled step, the next
 // steps of the same pile with sleep off, and how far its shapes go once woken.
 Outcome runOurs(const bench::SceneDescription& description, engine::SolverKind solver, double cap_s) {
-    engine::Scene scene;
-    scene.bodies = browser::read_scene_text(bench::scene_json(description), "pile", engine::worldKeys(scene.world));
+    const engine::Scene scene = engine::readScene(bench::scene_json(description), "pile");
     engine::WorldSettings world = scene.world;
     world.solver = solver;
     world.sleep = true;

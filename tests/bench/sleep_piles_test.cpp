@@ -25,23 +25,23 @@ TEST_CASE("sleep piles: across x layers shapes of the recipe's kinds and sizes, 
         CHECK(scene.bodies[0].width == 40.0 * 22.0 + 2 * 20.0);
         int circles = 0;
         for (std::size_t i = 3; i < scene.bodies.size(); ++i) {
-            const browser::BodyDescription& body = scene.bodies[i];
-            const double size = body.shape == browser::ShapeKind::circle ? 2 * body.radius : body.width;
+            const bench::BodyDescription& body = scene.bodies[i];
+            const double size = body.shape == bench::Shape::circle ? 2 * body.radius : body.width;
             CHECK(size >= 4.0);
             CHECK(size <= 40.0);
             CHECK(body.friction == 0.5);
             CHECK(body.restitution == 0.2);
-            circles += body.shape == browser::ShapeKind::circle ? 1 : 0;
+            circles += body.shape == bench::Shape::circle ? 1 : 0;
             // Each in its own lattice cell of 1.45 x 40 px (circles: 40 + 2): their
             // bounding circles, at most 40 / sqrt(2) = 28.3 px across a square, are apart.
-            const double reach = body.shape == browser::ShapeKind::circle ? body.radius : size / std::sqrt(2.0);
+            const double reach = body.shape == bench::Shape::circle ? body.radius : size / std::sqrt(2.0);
             CHECK(body.center.x - reach > 40.0);
             CHECK(body.center.x + reach < scene.world.width - 40.0);
             CHECK(body.center.y + reach < scene.world.height - 40.0);
             for (std::size_t j = 3; j < i; ++j) {
-                const browser::BodyDescription& other = scene.bodies[j];
+                const bench::BodyDescription& other = scene.bodies[j];
                 const double other_reach =
-                    other.shape == browser::ShapeKind::circle ? other.radius : other.width / std::sqrt(2.0);
+                    other.shape == bench::Shape::circle ? other.radius : other.width / std::sqrt(2.0);
                 CHECK(body.center.distance(other.center) > reach + other_reach);
             }
         }

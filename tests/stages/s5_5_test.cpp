@@ -109,19 +109,20 @@ TEST_CASE("s5_5: sleep is on unless the scene turns it off, and its knobs are re
 
 TEST_CASE("s5_5: the sleep speed is the scene's (3 px/s), or what gravity gives in 0.15 s where that is more") {
     WorldSettings world = engine::kBookWorld;
-    CHECK(world.sleep_speed == 3.0);
-    CHECK(engine::sleepSpeed(world) == 3.0);  // the demo's 20 px/s^2 gives 3 px/s in 0.15 s
+    test::expectEqual("the book world's sleep_speed, px/s", 3.0, world.sleep_speed);
+    // The demo's 20 px/s^2 gives 3 px/s in 0.15 s.
+    test::expectEqual("the sleep speed under 20 px/s^2, px/s", 3.0, engine::sleepSpeed(world));
     world.gravity = {0, 100};
     CHECK_THAT(engine::sleepSpeed(world), test::near(15.0, 1e-12));
     world.gravity = {600, 800};  // 1000 px/s^2, not down
     CHECK_THAT(engine::sleepSpeed(world), test::near(150.0, 1e-12));
     world.gravity = {0, 2};
-    CHECK(engine::sleepSpeed(world) == 3.0);
+    test::expectEqual("the sleep speed under 2 px/s^2: sleep_speed's 3, the more", 3.0, engine::sleepSpeed(world));
     world.sleep_speed = 20.0;
-    CHECK(engine::sleepSpeed(world) == 20.0);
+    test::expectEqual("the sleep speed with sleep_speed 20 under 2 px/s^2, px/s", 20.0, engine::sleepSpeed(world));
     world.gravity = {};
     world.sleep_speed = 0.5;
-    CHECK(engine::sleepSpeed(world) == 0.5);
+    test::expectEqual("the sleep speed with sleep_speed 0.5 and no gravity, px/s", 0.5, engine::sleepSpeed(world));
 }
 
 // issue 36: a shape that did not rest has rested 0 s, and 0 >= time_to_sleep 0.
@@ -137,7 +138,7 @@ TEST_CASE("s5_5: with time_to_sleep 0 or sleep_speed 0, a ball thrown into the a
             engine::Circle& ball = run.page.core.add(engine::Circle({100, 300}, 10));
             ball.setVelocity({300, -100});
             run.page.steps(10);
-            CHECK_FALSE(run.asleep(0));
+            test::expectEqual("the thrown ball asleep after 10 steps", false, run.asleep(0));
             CHECK_THAT(ball.center().x, test::near(150.0, 1e-9));
         }
     }
@@ -153,15 +154,17 @@ TEST_CASE("s5_5: with time_to_sleep 0 a box at rest sleeps after its first resti
         quick.box(400);
         // Its bottom lies on the floor's face: it touches it from the second step on.
         quick.page.steps(1);
-        CHECK_FALSE(quick.asleep(1));
-        CHECK(quick.stepUntilAllAsleep(1));
+        test::expectEqual("the box asleep after its first step, which it began touching nothing", false,
+                          quick.asleep(1));
+        test::expectEqual("the box asleep within a second, time_to_sleep 0", true, quick.stepUntilAllAsleep(1));
         // With sleep_speed 0 and no gravity to raise it, nothing is slow enough to rest: a
         // box floating still never sleeps.
         WorldSettings never = test::worldFromScene(R"({"sleep_speed": 0, "gravity": [0, 0]})");
         never.solver = solver;
         Sleepy slow(never);
         slow.box(400, 200);
-        CHECK_FALSE(slow.stepUntilAllAsleep(5));
+        test::expectEqual("the floating box asleep within 5 s, sleep_speed 0 and no gravity", false,
+                          slow.stepUntilAllAsleep(5));
     }
 }
 
@@ -463,8 +466,8 @@ TEST_CASE("s5_5: a touch that does not move a sleeping island wakes it, and its 
         if (world.allAsleep()) asleep = step;
     }
     REQUIRE(asleep > 0);
-    CHECK(ball.sleep().asleep);
-    CHECK(asleep <= 32);
+    test::expectEqual("the ball asleep with the column", true, ball.sleep().asleep);
+    test::expectAtMost("steps from the wake until the column sleeps again: the ball's 30 and 2", 32, asleep);
 }
 
 TEST_CASE("s5_5: a touch that moves a sleeping island starts its rest again") {
@@ -478,7 +481,8 @@ TEST_CASE("s5_5: a touch that moves a sleeping island starts its rest again") {
         world.page.steps(1);
         restarted = !world.asleep(3) && world.page.core.object(3).sleep().rested_s == 0.0;
     }
-    CHECK(restarted);
+    test::expectEqual("the column's top box awake with its rest timer at 0 within a second of the hit", true,
+                      restarted);
 }
 
 TEST_CASE("s5_5: a woken island starts from the contacts it slept with, and does not sag") {
@@ -495,11 +499,13 @@ TEST_CASE("s5_5: a woken island starts from the contacts it slept with, and does
     // Every contact point found in the first step awake is one the column slept with,
     // and starts from the impulses that held it.
     const engine::ContactSolver& solver = world.page.core.physics().contactSolver();
-    CHECK(solver.pointCount() == 20);  // two points under each box
-    CHECK(solver.persistedPointCount() == solver.pointCount());
+    test::expectEqual("contact points in the first step awake: two under each box", 20, solver.pointCount());
+    test::expectEqual("of them, points the column slept with, warm started", solver.pointCount(),
+                      solver.persistedPointCount());
     // So the top box does not sink: with the iterations starting from 0, 8 of them do not
     // carry a column of ten, which sinks by g dt^2 = 0.0056 px at the top in the step.
-    CHECK(world.page.core.object(10).center().distance(asleep_at[9]) < 1e-3);
+    test::expectBelow("how far the top box sank in the step it woke, px", 1e-3,
+                      world.page.core.object(10).center().distance(asleep_at[9]));
 }
 
 TEST_CASE("s5_5: an island woken in the middle of the contact pass is solved whole in that step") {
@@ -512,7 +518,8 @@ TEST_CASE("s5_5: an island woken in the middle of the contact pass is solved who
     for (int step = 0; step < kStepsPerSecond && world.asleep(1); ++step) world.page.steps(1);
     REQUIRE_FALSE(world.asleep(1));
     // Three boxes on the floor and on each other (two points each), and the ball's one.
-    CHECK(world.page.core.physics().contactSolver().pointCount() == 7);
+    test::expectEqual("contact points solved in the step the ball woke the column: 2 under each box, the ball's 1", 7,
+                      world.page.core.physics().contactSolver().pointCount());
 }
 
 // =================================================================================
@@ -665,10 +672,11 @@ TEST_CASE("s5_5: a box tipping slowly over an edge does not sleep mid-tip") {
         bool fell = false;
         for (int step = 0; step < 10 * kStepsPerSecond && !fell; ++step) {
             world.page.steps(1);
-            REQUIRE_FALSE(world.asleep(1));
+            INFO("step " << step);
+            test::requireEqual("the tipping box asleep, mid-tip", false, world.asleep(1));
             fell = world.page.core.object(1).center().y > 340;  // well below the platform
         }
-        CHECK(fell);
+        test::expectEqual("the box fell off the platform's edge within 10 s", true, fell);
     }
 }
 
@@ -700,9 +708,11 @@ TEST_CASE("s5_5: a box that starts to slide slowly down a slope from rest does n
             box.rotate(slope);
             for (int step = 0; step < 3 * kStepsPerSecond; ++step) {
                 run.page.steps(1);
-                REQUIRE_FALSE(run.asleep(1));
+                INFO("step " << step);
+                test::requireEqual("the sliding box asleep, mid-slide", false, run.asleep(1));
             }
-            CHECK(box.center().distance(Vec2{400, 300} + normal * 30.0) > 3.0);  // it did slide
+            test::expectAbove("how far the box slid in 3 s, px", 3.0,
+                              box.center().distance(Vec2{400, 300} + normal * 30.0));
         }
     }
 }
@@ -755,8 +765,8 @@ TEST_CASE("s5_5: issue 35's pile (400 shapes, pile.json) falls asleep within 2 s
     INFO("landed at " << landed_s << " s, 99 % asleep from " << asleep_s << " s");
     REQUIRE(landed_s > 0);
     REQUIRE(asleep_s > 0);
-    CHECK(asleep_s <= landed_s + 2.0);
-    CHECK(asleep_s <= 20.0);
+    test::expectAtMost("99 % asleep, s from the start: at most 2 s after the landing", landed_s + 2.0, asleep_s);
+    test::expectAtMost("99 % asleep, s from the start", 20.0, asleep_s);
     // Asleep, a step hands on only the pairs of the few shapes still awake (at most 4 of
     // the 400) and the floor's with its walls (static, refused before any test), where the
     // pile awake has over 800 contacts; and it solves only the awake shapes' contacts.
@@ -768,6 +778,46 @@ TEST_CASE("s5_5: issue 35's pile (400 shapes, pile.json) falls asleep within 2 s
 
 // =================================================================================
 // Seeing it
+
+TEST_CASE("s5_5: islands.json: the ball wakes the right pile only, and moves it, whose rest starts again") {
+    // What the README's two pictures of islands.json show (expected/islands/ and
+    // islands_overlay/): objects 1 to 3 the left pile, 4 to 6 the right, 7 the ball (three
+    // times a box's mass) that falls 45 px onto the right pile, in 2.1 s under 20 px/s^2.
+    const engine::Scene scene =
+        engine::loadScene(fs::path(BENCH_SCENES_DIR) / ".." / ".." / "ch5_demo" / "5.5_sleeping" / "islands.json");
+    Sleepy run(scene.world);
+    engine::buildScene(run.page.core, scene.bodies);
+    const engine::Core& core = run.page.core;
+    // 2.0 s in (frame 120): both piles asleep, each an island of its own; the ball falls alone.
+    run.page.steps(2 * kStepsPerSecond);
+    for (std::size_t i = 1; i <= 6; ++i) {
+        INFO("box " << i);
+        test::expectEqual("the box asleep at 2.0 s", true, run.asleep(i));
+    }
+    test::expectEqual("the left and right piles in different islands", true, run.island(1) != run.island(4));
+    test::expectEqual("the falling ball asleep at 2.0 s", false, run.asleep(7));
+    test::expectEqual("the falling ball's rest timer at 2.0 s, s: it touches nothing", 0.0,
+                      core.object(7).sleep().rested_s);
+    // 2.5 s in (frame 150): the ball has landed, woken the right pile and only that one,
+    // and moved it: the four are one island whose least rested shape rested 0.35 s, so
+    // its rest started again at the landing.
+    run.page.steps(kStepsPerSecond / 2);
+    test::expectEqual("awake shapes at 2.5 s: the right pile and the ball", 4, core.awakeCount());
+    for (std::size_t i = 1; i <= 3; ++i) {
+        INFO("left box " << i);
+        test::expectEqual("the left pile's box asleep at 2.5 s", true, run.asleep(i));
+    }
+    double least_rest_s = 1.0;
+    for (std::size_t i = 4; i <= 7; ++i) {
+        INFO("object " << i);
+        test::expectEqual("the right pile's shape in the ball's island at 2.5 s", run.island(7), run.island(i));
+        least_rest_s = std::min(least_rest_s, core.object(i).sleep().rested_s);
+    }
+    CHECK_THAT(least_rest_s, test::near(0.35, 0.5 / kStepsPerSecond));
+    // Half a second after its rest started again, all seven sleep again (frame 180).
+    run.page.steps(kStepsPerSecond / 2);
+    test::expectEqual("awake shapes at 3.0 s", 0, core.awakeCount());
+}
 
 TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sleeping shapes are drawn gray") {
     TwoIslands world;
