@@ -455,7 +455,7 @@ TEST_CASE("s5_5: a touch that does not move a sleeping island wakes it, and its 
         world.page.steps(1);
         if (!world.asleep(3)) woken = step;
     }
-    REQUIRE(woken > 0);
+    test::requireEqual("the column woken by the ball's touch within a second", true, woken > 0);
     // The wake did not start the column's rest again: it went on by the step's dt.
     CHECK_THAT(world.page.core.object(3).sleep().rested_s, test::near(rested + 1.0 / 60, 1e-9));
     // So the column waits for the ball alone: it sleeps when the ball has rested 0.5 s,
@@ -465,7 +465,7 @@ TEST_CASE("s5_5: a touch that does not move a sleeping island wakes it, and its 
         world.page.steps(1);
         if (world.allAsleep()) asleep = step;
     }
-    REQUIRE(asleep > 0);
+    test::requireEqual("the column asleep again within 2 s of the wake", true, asleep > 0);
     test::expectEqual("the ball asleep with the column", true, ball.sleep().asleep);
     test::expectAtMost("steps from the wake until the column sleeps again: the ball's 30 and 2", 32, asleep);
 }
@@ -494,7 +494,8 @@ TEST_CASE("s5_5: a woken island starts from the contacts it slept with, and does
     std::vector<Vec2> asleep_at;
     for (std::size_t i = 1; i <= 10; ++i) asleep_at.push_back(world.page.core.object(i).center());
     world.page.press(browser::Key::Comma, 2);
-    REQUIRE(world.page.core.awakeCount() == 10);
+    test::requireEqual("awake shapes after the comma key, off and on: the column of ten", 10,
+                       world.page.core.awakeCount());
     world.page.steps(1);
     // Every contact point found in the first step awake is one the column slept with,
     // and starts from the impulses that held it.
