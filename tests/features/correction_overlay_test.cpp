@@ -40,4 +40,37 @@ TEST_CASE("correction overlay: the move of one pass, ten times longer, from the 
     CHECK(pixels.at(257, 100) == browser::colors::kWhite);
 }
 
+TEST_CASE("correction overlay: the physics keeps its record only while the overlay is on, and moves alike") {
+    engine::WorldSettings settings = test::world(false);
+    settings.positional_correction = true;
+    settings.relaxation_iterations = 1;
+    // Two pages of the same world, the overlay on in one of them: the circles of the
+    // case above, 2 px deep.
+    test::WorldFixture plain(settings);
+    test::WorldFixture shown(settings);
+    for (test::WorldFixture* page : {&plain, &shown}) {
+        page->core.add(engine::Circle({200.5, 100.5}, 20, engine::PhysicalAttributes{.mass = 0.0}));
+        page->core.add(engine::Circle({238.5, 100.5}, 20));
+    }
+    shown.window.overlay = true;
+    for (test::WorldFixture* page : {&plain, &shown}) {
+        page->window.clock.advanceFrame();
+        page->core.runGameLoop();
+    }
+    // With the overlay off the step keeps no record at all; with it on, the move of the
+    // one pass: depth x rate, all of it the movable circle's.
+    CHECK(plain.core.physics().responses().empty());
+    REQUIRE(shown.core.physics().responses().size() == 1);
+    CHECK_THAT(shown.core.physics().responses().at({0, 1}).moved_second,
+               test::near(browser::Vec2{2.0 * settings.correction_rate, 0}, 1e-12));
+    // The record changes nothing the step does.
+    CHECK(plain.core.object(1).center() == shown.core.object(1).center());
+    CHECK(plain.core.object(1).velocity() == shown.core.object(1).velocity());
+    // The overlay off again: the record goes with it.
+    shown.window.overlay = false;
+    shown.window.clock.advanceFrame();
+    shown.core.runGameLoop();
+    CHECK(shown.core.physics().responses().empty());
+}
+
 }  // namespace correction_overlay_test
