@@ -8,12 +8,11 @@
 #include <sstream>
 
 #include "message_text.h"
+#include "state_dump.h"
 
 namespace browser {
 
 namespace {
-
-constexpr std::string_view kHeader = "step,index,shape,cx,cy,angle,vx,vy,angular_velocity";
 
 std::vector<std::string_view> split_commas(std::string_view line) {
     std::vector<std::string_view> parts;
@@ -154,24 +153,34 @@ std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name) {
     auto refuse = [&](const std::string& problem) -> DumpError {
         return DumpError(printable(name) + ":" + std::to_string(line_number) + ": " + problem);
     };
-    if (!std::getline(in, line) || line != kHeader) {
-        throw refuse("not a state dump: the first line must be \"" + std::string(kHeader) + "\"");
+    const bool got_line = static_cast<bool>(std::getline(in, line));
+    if (!got_line || (line != kDumpHeader && line != kDumpHeaderWithIds)) {
+        throw refuse("not a state dump: the first line must be \"" + std::string(kDumpHeader) + "\" (or, with ids, \"" +
+                     std::string(kDumpHeaderWithIds) + "\")");
     }
+    // With ids, each row has one more field, after the index.
+    const std::size_t id_fields = line == kDumpHeaderWithIds ? 1 : 0;
+    const std::size_t fields = 3 + id_fields + kDumpFields.size();
     while (std::getline(in, line)) {
         ++line_number;
         const std::vector<std::string_view> parts = split_commas(line);
-        if (parts.size() != 3 + kDumpFields.size())
-            throw refuse("a row has 9 fields, this has " + std::to_string(parts.size()));
+        if (parts.size() != fields) {
+            throw refuse("a row has " + std::to_string(fields) + " fields, this has " + std::to_string(parts.size()));
+        }
         DumpRow row;
         const auto step = read_number<long>(parts[0]);
         const auto index = read_number<std::size_t>(parts[1]);
         if (!step || !index) throw refuse("step and index must be whole numbers");
         row.step = *step;
         row.index = *index;
-        row.shape = parts[2];
+        if (id_fields == 1) {
+            row.id = read_number<std::uint64_t>(parts[2]);
+            if (!row.id) throw refuse("the id must be a whole number");
+        }
+        row.shape = parts[2 + id_fields];
         if (row.shape != "rectangle" && row.shape != "circle") throw refuse("the shape must be rectangle or circle");
         for (std::size_t f = 0; f < kDumpFields.size(); ++f) {
-            const auto value = read_number<double>(parts[3 + f]);
+            const auto value = read_number<double>(parts[3 + id_fields + f]);
             if (!value) throw refuse(std::string(kDumpFields[f]) + " is not a number");
             row.values[f] = *value;
         }

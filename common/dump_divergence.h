@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <istream>
 #include <optional>
@@ -17,12 +18,14 @@
 
 namespace browser {
 
-// The numeric columns of a dump, in file order after step, index and shape.
+// The numeric columns of a dump, in file order after step, index, the id (when the dump
+// has ids) and shape.
 inline constexpr std::array<std::string_view, 6> kDumpFields{"cx", "cy", "angle", "vx", "vy", "angular_velocity"};
 
 struct DumpRow {
     long step = 0;
     std::size_t index = 0;
+    std::optional<std::uint64_t> id;  // in a dump with ids (5.4 on; state_dump.h)
     std::string shape;
     std::array<double, kDumpFields.size()> values{};
 };
@@ -32,8 +35,10 @@ struct DumpError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Reads a dump, checking its shape: the header, nine columns, steps that never go
-// back, and each step's bodies numbered 0, 1, 2... `name` is what messages call it.
+// Reads a dump, checking its shape: the header, nine columns (ten with ids), steps
+// that never go back, and each step's bodies numbered 0, 1, 2... Two dumps are compared
+// body by body in index order, whether they have ids or not (a stage with ids against
+// one without). `name` is what messages call it.
 std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name);
 std::vector<DumpRow> read_dump(const std::filesystem::path& file);
 

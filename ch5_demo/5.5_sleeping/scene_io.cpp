@@ -98,7 +98,7 @@ void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies)
 void dumpState(browser::StateDump& dump, const Core& core) {
     for (std::size_t i = 0; i < core.objectCount(); ++i) {
         const RigidShape& shape = core.object(i);
-        dump.row(core.stepCount(), i, browser::shape_name(kindOf(shape)), shape.center(), shape.angle(),
+        dump.row(core.stepCount(), i, shape.id(), browser::shape_name(kindOf(shape)), shape.center(), shape.angle(),
                  shape.velocity(), shape.angularVelocity());
     }
 }
