@@ -1,7 +1,8 @@
-// A chapter 5 stage's engine behind bench::StageEngine. Written once, compiled once per
-// stage: each time with that stage's folder on the include path, `engine` defined as a
-// name of that stage's own (engine_s5_1, ...) and BENCH_STAGE_ENGINE as the factory to
-// define (s5_1_engine, ...); bench/CMakeLists.txt says why. Where the stages differ (5.1
+// A stage's engine behind bench::StageEngine. Written once, compiled once per stage:
+// each time against that stage's engine library, which puts its folder on the include
+// path and defines `engine` as a name of its own (engine_s5_1, ...), and with
+// BENCH_STAGE_ENGINE as the factory to define (s5_1_engine, ...); bench/CMakeLists.txt
+// says why. Where the stages differ (5.1
 // counts no pairs, 5.3 has sub-steps), the code asks the stage's types what they have
 // rather than which stage it is.
 

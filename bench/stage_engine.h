@@ -1,9 +1,9 @@
 #pragma once
-// One chapter 5 stage's engine, as the bench drives it. Stages 5.1 to 5.6 all keep
-// their engine in namespace engine under the same class names, so this interface
-// names no engine type: each stage gets its own implementation, made by one adapter
-// (stage_adapter.cpp) compiled once per stage (bench/CMakeLists.txt says how), and the
-// rest of the bench sees only this.
+// One stage's engine, as the bench drives it. The stages all keep their engine in
+// namespace engine under the same class names, so this interface names no engine type:
+// each stage gets its own implementation, made by one adapter (stage_adapter.cpp)
+// compiled once per stage (bench/CMakeLists.txt says how), and the rest of the bench
+// sees only this.
 
 #include <memory>
 #include <string>
@@ -31,12 +31,10 @@ public:
     virtual bool same_settings(const WorldDescription& a, const WorldDescription& b) const = 0;
 };
 
-// One per stage, each defined by the adapter compiled with that stage.
-std::unique_ptr<StageEngine> s5_1_engine();
-std::unique_ptr<StageEngine> s5_2_engine();
-std::unique_ptr<StageEngine> s5_3_engine();
-std::unique_ptr<StageEngine> s5_4_engine();
-std::unique_ptr<StageEngine> s5_5_engine();
-std::unique_ptr<StageEngine> s5_6_engine();
+// One per stage of bench_stage_list.h (s5_1_engine, ...), each defined by the adapter
+// compiled with that stage.
+#define BENCH_STAGE(id, number) std::unique_ptr<StageEngine> id##_engine();
+#include "bench_stage_list.h"
+#undef BENCH_STAGE
 
 }  // namespace bench

@@ -44,12 +44,11 @@ void write_default(const StageEngine& stage, std::optional<Value> WorldDescripti
 
 std::string stage_name(Stage stage) {
     switch (stage) {
-        case Stage::s5_1: return "5.1";
-        case Stage::s5_2: return "5.2";
-        case Stage::s5_3: return "5.3";
-        case Stage::s5_4: return "5.4";
-        case Stage::s5_5: return "5.5";
-        case Stage::s5_6: return "5.6";
+#define BENCH_STAGE(id, number) \
+    case Stage::id:             \
+        return number;
+#include "bench_stage_list.h"
+#undef BENCH_STAGE
         case Stage::box2d: return box2d_version();
     }
     return "";
@@ -57,12 +56,11 @@ std::string stage_name(Stage stage) {
 
 std::unique_ptr<StageEngine> stage_engine(Stage stage) {
     switch (stage) {
-        case Stage::s5_1: return s5_1_engine();
-        case Stage::s5_2: return s5_2_engine();
-        case Stage::s5_3: return s5_3_engine();
-        case Stage::s5_4: return s5_4_engine();
-        case Stage::s5_5: return s5_5_engine();
-        case Stage::s5_6: return s5_6_engine();
+#define BENCH_STAGE(id, number) \
+    case Stage::id:             \
+        return id##_engine();
+#include "bench_stage_list.h"
+#undef BENCH_STAGE
         case Stage::box2d: break;
     }
     throw std::invalid_argument("stage_engine: Box2D is not a stage of this book");

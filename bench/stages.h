@@ -1,15 +1,8 @@
 #pragma once
-// Which engine makes a row: one of the chapter 5 stages, each the engine of its own
-// folder, or Box2D as the reference (box2d_world.h).
-//   5.1  ch5_demo/5.1_cool_demo            the book's engine: passes, dt, correction
-//   5.2  ch5_demo/5.2_spatial_partitioning + broad_phase (its default: the grid)
-//   5.3  ch5_demo/5.3_speed_vs_accuracy    + substeps, integrator, friction_model,
-//                                            rotation, friction
-//   5.4  ch5_demo/5.4_contact_solver       + solver and its knobs
-//   5.5  ch5_demo/5.5_sleeping             + sleep (its default: on)
-//   5.6  ch5_demo/5.6_continuous_collision + continuous (its default: on)
-// What a stage can vary is what its scene files may say: the bench asks the stage for
-// its world keys rather than keeping a table of its own.
+// Which engine makes a row: one of the stages stages.txt marks "bench" (5.1 to 5.6),
+// each the engine of its own folder, or Box2D as the reference (box2d_world.h). What a
+// stage can vary is what its scene files may say: the bench asks the stage for its
+// world keys rather than keeping a table of its own.
 
 #include <array>
 #include <memory>
@@ -23,13 +16,23 @@
 
 namespace bench {
 
-enum class Stage { s5_1, s5_2, s5_3, s5_4, s5_5, s5_6, box2d };
+// bench_stage_list.h, made by bench/CMakeLists.txt from stages.txt, holds one line
+// BENCH_STAGE(s5_1, "5.1") per stage, oldest first.
+enum class Stage {
+#define BENCH_STAGE(id, number) id,
+#include "bench_stage_list.h"
+#undef BENCH_STAGE
+    box2d
+};
 
-// Oldest first.
-inline constexpr std::array kChapter5Stages{Stage::s5_1, Stage::s5_2, Stage::s5_3,
-                                            Stage::s5_4, Stage::s5_5, Stage::s5_6};
+// The stages, oldest first.
+inline constexpr std::array kChapter5Stages{
+#define BENCH_STAGE(id, number) Stage::id,
+#include "bench_stage_list.h"
+#undef BENCH_STAGE
+};
 
-// "5.1" to "5.6", or Box2D's own name and version ("Box2D 2.4").
+// The stage's number ("5.1"), or Box2D's own name and version ("Box2D 2.4").
 std::string stage_name(Stage stage);
 
 // A chapter 5 stage's engine. Throws std::invalid_argument for Stage::box2d.

@@ -1,3 +1,70 @@
+# add_stages(<list>): add_stage for every stage of the list (stages.txt at the top, which
+# says how it is written), oldest first. A line it cannot read stops the configuration
+# with the file, the line number and what is wrong. Each stage's facts are remembered as
+# global properties (below), the list's book facts as PHYSICS_STAGE_<id>_<PROJECT|PAGE>,
+# and the stages the bench drives, oldest first, as PHYSICS_BENCH_STAGES.
+function(add_stages list)
+  # Configure again when the list changes: file(STRINGS) alone would not.
+  set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${list})
+  file(STRINGS ${list} lines)
+  set(number 0)
+  set(folder)
+  set(features)  # every feature so far: a stage keeps those of the stages before
+  foreach(line IN LISTS lines)
+    math(EXPR number "${number} + 1")
+    if(line MATCHES "^#" OR line MATCHES "^[ \t]*$")
+      continue()
+    elseif(line MATCHES "^[^ \t]")
+      if(folder)
+        add_listed_stage(${folder} "${features}" "${project}" "${page}" "${bench}")
+      endif()
+      set(folder "${line}")
+      foreach(key project page read bench)
+        set(${key})
+      endforeach()
+      set(chapter_agrees FALSE)
+      if(folder MATCHES "^ch([0-9]+)_[a-z0-9_]+/([0-9]+)\\.([0-9]+)_[a-z0-9_]+$")
+        if(CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2)
+          set(chapter_agrees TRUE)
+        endif()
+      endif()
+      if(NOT chapter_agrees)
+        message(FATAL_ERROR "${list}:${number}: \"${folder}\" is not a stage folder (chN_<name>/N.M_<name>)")
+      endif()
+      if(NOT IS_DIRECTORY ${PROJECT_SOURCE_DIR}/${folder})
+        message(FATAL_ERROR "${list}:${number}: there is no folder ${folder}")
+      endif()
+    elseif(NOT folder)
+      message(FATAL_ERROR "${list}:${number}: a stage's fact before its folder")
+    elseif(line MATCHES "^[ \t]+features[ \t]+(.+)$")
+      string(REGEX REPLACE "[ \t]+" ";" added "${CMAKE_MATCH_1}")
+      list(APPEND features ${added})
+    elseif(line MATCHES "^[ \t]+(project|page|read|bench)[ \t]+(.+)$")
+      set(${CMAKE_MATCH_1} "${CMAKE_MATCH_2}")
+    else()
+      message(FATAL_ERROR "${list}:${number}: expected \"key  value\" with a key of project, page, read, features, bench")
+    endif()
+  endforeach()
+  if(folder)
+    add_listed_stage(${folder} "${features}" "${project}" "${page}" "${bench}")
+  endif()
+endfunction()
+
+# One stage of the list: the folder ch3_collision/3.3_rectangle_collision is stage s3_3,
+# program rectangle_collision, chapter ch3.
+function(add_listed_stage folder features project page bench)
+  string(REGEX MATCH "^(ch[0-9]+)_[^/]*/([0-9]+)\\.([0-9]+)_(.*)$" matched ${folder})
+  set(id s${CMAKE_MATCH_2}_${CMAKE_MATCH_3})
+  add_stage(${id} FOLDER ${folder} PROGRAM ${CMAKE_MATCH_4} CHAPTER ${CMAKE_MATCH_1} FEATURES ${features})
+  set_property(GLOBAL PROPERTY PHYSICS_STAGE_${id}_PROJECT "${project}")
+  set_property(GLOBAL PROPERTY PHYSICS_STAGE_${id}_PAGE "${page}")
+  if(bench STREQUAL "yes")
+    set_property(GLOBAL APPEND PROPERTY PHYSICS_BENCH_STAGES ${id})
+  elseif(bench)
+    message(FATAL_ERROR "stages.txt, ${folder}: bench is \"yes\" or left out (got \"${bench}\")")
+  endif()
+endfunction()
+
 # add_stage(<id> FOLDER <dir> PROGRAM <name> CHAPTER <chN> [FEATURES <feature>...])
 #
 # Makes everything one book project needs from its folder:

@@ -2,7 +2,7 @@
 # starts 3.4 from a copy of our 3.3 (tools/workbench 3.4) and writes nothing yet must not
 # pass 3.4's pictures; so for every pair of stages in the book's order, from 1.1 and 2.1
 # up to 4.4 and 5.1, the engine of the first draws the default run of the second, and its
-# pictures must differ from the second's expected ones. Call it after every add_stage.
+# pictures must differ from the second's expected ones. Call it after add_stages.
 #   <first>_on_<second>                 program: our <first>'s main.cpp and engine, with
 #                                       <second>'s default run (cmake/DefaultRun.cmake),
 #                                       just as the reader's copy starts

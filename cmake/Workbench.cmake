@@ -1,6 +1,6 @@
 # add_workbench_stages(): every folder workbench/<X.Y>_<name> (made by tools/workbench,
 # then the reader's own) becomes a stage wb_s<X>_<Y>, judged as our s<X>_<Y> is: the same
-# features, the same stage tests, our expected pictures. Call it after every add_stage.
+# features, the same stage tests, our expected pictures. Call it after add_stages.
 #
 # A reader's stage is work in progress, so nothing of it is in the default build (a
 # stage that does not compile never stops `cmake --build build`), and each feature's tests
@@ -16,16 +16,13 @@
 #   CTest wb_s3_3.pictures             the default run against our 3.3's expected/
 # all labelled wb_s3_3 and workbench. `ctest -L wb_s3_3` builds as it goes.
 
-# The book's projects (cmake/book_projects.txt) as variables BOOK_<sX_Y> holding
+# The book's projects (stages.txt, through add_stages) as variables BOOK_<sX_Y> holding
 # `book project 3.3, "The Rectangle Collision Project" (page 58)`.
-function(read_book_projects)
-  file(STRINGS ${PROJECT_SOURCE_DIR}/cmake/book_projects.txt lines REGEX "^[0-9]")
-  foreach(line IN LISTS lines)
-    string(REPLACE " | " ";" fields "${line}")
-    list(GET fields 0 number)
-    list(GET fields 1 heading)
-    list(GET fields 2 page)
-    string(REPLACE "." "_" id "s${number}")
+function(read_book_projects stages)
+  foreach(id IN LISTS stages)
+    get_property(heading GLOBAL PROPERTY PHYSICS_STAGE_${id}_PROJECT)
+    get_property(page GLOBAL PROPERTY PHYSICS_STAGE_${id}_PAGE)
+    string(REGEX REPLACE "^s([0-9]+)_([0-9]+)$" "\\1.\\2" number ${id})
     set(BOOK_${id} "book project ${number}, \"${heading}\" (page ${page})" PARENT_SCOPE)
   endforeach()
 endfunction()
@@ -33,7 +30,7 @@ endfunction()
 function(add_workbench_stages)
   file(GLOB entries LIST_DIRECTORIES true CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/workbench/*)
   get_property(stages GLOBAL PROPERTY PHYSICS_STAGES)
-  read_book_projects()
+  read_book_projects("${stages}")
   # Which stage a feature first appears in: its test failing sends the reader there.
   foreach(stage IN LISTS stages)
     get_property(features GLOBAL PROPERTY PHYSICS_STAGE_${stage}_FEATURES)

@@ -4,7 +4,7 @@
 // bottom of the echo panel that names each colour. The book's pictures stay the book's:
 // with the overlay off nothing here draws.
 //
-// From this stage on the pass finds the collision info of each colliding pair (Figure
+// From 3.2 on the pass finds the collision info of each colliding pair (Figure
 // 3-6), and the overlay shows it all: the start and the end of the overlap, the normal
 // (drawn 20 px long, so its direction shows even where the overlap is a hair deep) and
 // the depth in numbers, where the book shows only the line from start to end.

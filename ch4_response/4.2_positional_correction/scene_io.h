@@ -1,6 +1,6 @@
 #pragma once
 // Scene files in, state dumps out (--scene FILE, --dump FILE): the bridge between what
-// the browser reads and writes (scene_file.h, state_dump.h) and this stage's world.
+// the browser reads and writes (scene_file.h, state_dump.h) and the stage's world.
 // Neither is in the book: they let a reader change the scene without recompiling, and
 // compare this engine's numbers, step by step, with the book's JavaScript.
 
@@ -15,10 +15,10 @@
 
 namespace engine {
 
-// The world keys this stage reads, bound to `world`: one for each of its settings.
+// The world keys the stage reads, bound to `world`: one for each of its settings.
 std::vector<browser::WorldKey> worldKeys(WorldSettings& world);
 
-// A scene file, read with this stage's world keys: the book's world where the file
+// A scene file, read with the stage's world keys: the book's world where the file
 // says nothing, and the file's bodies. Throws browser::SceneError with one line.
 struct Scene {
     WorldSettings world = kBookWorld;

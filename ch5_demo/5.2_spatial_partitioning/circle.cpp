@@ -12,7 +12,7 @@ constexpr double kDiscInertiaDivisor = 2.0;
 
 // A circle is its own bounding circle.
 Circle::Circle(Vec2 center, double radius, PhysicalAttributes attributes)
-    : RigidShape(ShapeType::Circle, center, radius, attributes),
+    : RigidShape(ShapeType::Circle, center, checkedSize(radius, "circle radius"), attributes),
       radius_(radius),
       startpoint_(center.x, center.y - radius) {
     updateInertia();

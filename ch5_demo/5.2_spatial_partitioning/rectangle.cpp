@@ -13,7 +13,9 @@ constexpr double kRectangleInertiaDivisor = 12.0;
 // The corners are the points farthest from the centre, half a diagonal away, so the
 // bounding circle has half the diagonal as its radius.
 Rectangle::Rectangle(Vec2 center, double width, double height, PhysicalAttributes attributes)
-    : RigidShape(ShapeType::Rectangle, center, std::hypot(width, height) / 2, attributes),
+    : RigidShape(ShapeType::Rectangle, center,
+                 std::hypot(checkedSize(width, "rectangle width"), checkedSize(height, "rectangle height")) / 2,
+                 attributes),
       width_(width),
       height_(height) {
     const double half_w = width / 2;

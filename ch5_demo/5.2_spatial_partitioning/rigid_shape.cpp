@@ -1,5 +1,9 @@
 #include "rigid_shape.h"
 
+#include <cmath>
+#include <sstream>
+#include <string>
+
 namespace engine {
 
 namespace {
@@ -7,7 +11,24 @@ namespace {
 // acceleration is always 0. update() still adds it, to show that turning takes the
 // same two steps as moving.
 constexpr double kAngularAcceleration = 0.0;  // rad/s^2
+
+[[noreturn]] void refuse(std::string_view name, std::string_view rule, double got) {
+    std::ostringstream message;
+    message << name << " must be " << rule << " (got " << got << ")";
+    throw InvalidShape(message.str());
+}
+
+void check(bool accepted, std::string_view name, std::string_view rule, double got) {
+    if (!accepted) refuse(name, rule, got);
+}
+
+std::string_view nameOf(ShapeType type) { return type == ShapeType::Circle ? "circle" : "rectangle"; }
 }  // namespace
+
+double RigidShape::checkedSize(double size, std::string_view name) {
+    check(std::isfinite(size) && size > 0.0, name, "a finite number > 0", size);
+    return size;
+}
 
 // Every shape starts unturned and at rest; angle_ keeps count of the turns that follow.
 RigidShape::RigidShape(ShapeType type, Vec2 center, double bound_radius, PhysicalAttributes attributes)
@@ -16,7 +37,17 @@ RigidShape::RigidShape(ShapeType type, Vec2 center, double bound_radius, Physica
       bound_radius_(bound_radius),
       inv_mass_(attributes.mass > 0.0 ? 1.0 / attributes.mass : 0.0),
       friction_(attributes.friction),
-      restitution_(attributes.restitution) {}
+      restitution_(attributes.restitution) {
+    std::string shape(nameOf(type));
+    check(std::isfinite(center.x), shape + " center x", "a finite number", center.x);
+    check(std::isfinite(center.y), shape + " center y", "a finite number", center.y);
+    check(std::isfinite(attributes.mass) && attributes.mass >= 0.0, shape + " mass", "a finite number >= 0",
+          attributes.mass);
+    check(std::isfinite(attributes.friction) && attributes.friction >= 0.0, shape + " friction", "a finite number >= 0",
+          attributes.friction);
+    check(attributes.restitution >= 0.0 && attributes.restitution <= 1.0, shape + " restitution", "a number in [0, 1]",
+          attributes.restitution);
+}
 
 bool RigidShape::boundTest(const RigidShape& other) const {
     // Two circles overlap exactly when their centres are no farther apart than their

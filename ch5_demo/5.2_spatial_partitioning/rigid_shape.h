@@ -24,6 +24,8 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
+#include <string_view>
 
 #include "canvas.h"
 #include "collision_info.h"
@@ -42,6 +44,13 @@ struct PhysicalAttributes {
     double mass = 1.0;         // the book's defaults
     double friction = 0.8;     // how strongly surfaces grip when they slide (4.3)
     double restitution = 0.2;  // bounciness: 0 sticks, 1 bounces back at full speed (4.3)
+};
+
+// A shape that cannot be simulated: a NaN or infinite number, a size <= 0, a negative
+// mass or friction, a restitution outside [0, 1]. what() is one line naming the shape,
+// the value and the rule, e.g. "circle radius must be a finite number > 0 (got -2)".
+struct InvalidShape : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
 };
 
 class RigidShape {
@@ -90,7 +99,13 @@ public:
     void setRestitution(double restitution) { restitution_ = restitution; }
 
 protected:
+    // Throws InvalidShape when the centre or an attribute cannot be simulated. A NaN
+    // let in here would spread through every collision the shape takes part in, and a
+    // negative mass would make impulses push the wrong way, so both stop at the door.
     RigidShape(ShapeType type, Vec2 center, double bound_radius, PhysicalAttributes attributes);
+    // `size` itself when it is a finite number > 0; otherwise throws InvalidShape naming
+    // it (e.g. "rectangle width"). Each shape checks its sizes with it before using them.
+    static double checkedSize(double size, std::string_view name);
     RigidShape(const RigidShape&) = default;
     RigidShape& operator=(const RigidShape&) = default;
 

@@ -1,5 +1,5 @@
 #pragma once
-// This stage's part of the overlay (overlay.h): the grid broad phase at work, when the
+// 5.2's part of the overlay (overlay.h): the grid broad phase at work, when the
 // world uses it.
 //  - The grid's cells, and the cells each shape's widened box reaches into: two shapes
 //    become candidates only by sharing one of them.

@@ -53,7 +53,7 @@ struct WorldSettings {
     // With no borders around the canvas, a shape that falls off would be simulated for
     // ever, unseen; so a shape whose centre leaves the canvas is removed.
     bool remove_out_of_bounds = true;
-    // This stage's grid, unless a scene asks for the book's bounding circles (or for
+    // 5.2's grid, unless a scene asks for the book's bounding circles (or for
     // no broad phase at all).
     BroadPhaseKind broad_phase = BroadPhaseKind::grid;
     // Each fixed step runs as this many steps of dt / substeps.

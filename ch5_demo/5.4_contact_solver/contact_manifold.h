@@ -1,5 +1,5 @@
 #pragma once
-// Where two overlapping shapes touch, as points (not in the book; this stage's solver,
+// Where two overlapping shapes touch, as points (not in the book; 5.4's solver,
 // contact_solver.h, needs them).
 //
 // The book's narrow phase answers with one overlap: a depth, a normal and one segment.

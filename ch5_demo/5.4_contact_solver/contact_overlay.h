@@ -1,5 +1,5 @@
 #pragma once
-// This stage's part of the overlay (overlay.h): what the sequential impulse solver
+// 5.4's part of the overlay (overlay.h): what the sequential impulse solver
 // worked on in the last step, drawn by the solver's own numbers.
 //  - For two rectangles, the reference face (whose normal the separating axis test
 //    chose), its two side lines, and the incident face they clip: what is left of the

@@ -1,6 +1,6 @@
 #pragma once
 // The narrow phase on its own: the exact test of one pair, and what a pass records of a
-// pair that collides. In the book it lives in the physics component; this stage has two
+// pair that collides. In the book it lives in the physics component; from 5.4 on there are two
 // users of it, the book's relaxation passes (physics.h) and the contact solver
 // (contact_solver.h), so it sits below both, and neither includes the other.
 

@@ -39,7 +39,7 @@ enum class Integrator { symplectic, explicit_euler };
 enum class FrictionModel { book, coulomb };
 
 // Who resolves the contacts a step finds (physics.cpp): the book's relaxation passes,
-// or the sequential impulse solver of this stage (contact_solver.h).
+// or the sequential impulse solver of 5.4 (contact_solver.h).
 enum class SolverKind { book, sequential_impulse };
 // How the sequential impulse solver removes overlap (contact_solver.h): pseudo
 // velocities that move the shapes apart and are then forgotten (split impulses); an
@@ -72,7 +72,7 @@ struct WorldSettings {
     // With no borders around the canvas, a shape that falls off would be simulated for
     // ever, unseen; so a shape whose centre leaves the canvas is removed.
     bool remove_out_of_bounds = true;
-    // This stage's grid, unless a scene asks for the book's bounding circles (or for
+    // 5.2's grid, unless a scene asks for the book's bounding circles (or for
     // no broad phase at all).
     BroadPhaseKind broad_phase = BroadPhaseKind::grid;
     // Each fixed step runs as this many steps of dt / substeps.

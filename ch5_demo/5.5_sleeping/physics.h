@@ -26,8 +26,8 @@
 // shapes there, and change their angular velocities too.
 //
 // 5.4 adds a second way to resolve the contacts (world.solver): the sequential
-// impulse solver of contact_solver.h, in place of the relaxation passes. This stage
-// lets resting shapes sleep (islands.h): a pair of two sleeping or static shapes is not
+// impulse solver of contact_solver.h, in place of the relaxation passes. 5.5 lets
+// resting shapes sleep (islands.h): a pair of two sleeping or static shapes is not
 // even tested, and every touching pair found is reported to the islands, which wake a
 // sleeping shape that an awake one reaches.
 //

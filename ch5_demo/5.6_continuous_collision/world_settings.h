@@ -41,7 +41,7 @@ enum class Integrator { symplectic, explicit_euler };
 enum class FrictionModel { book, coulomb };
 
 // Who resolves the contacts a step finds (physics.cpp): the book's relaxation passes,
-// or the sequential impulse solver of this stage (contact_solver.h).
+// or the sequential impulse solver of 5.4 (contact_solver.h).
 enum class SolverKind { book, sequential_impulse };
 // How the sequential impulse solver removes overlap (contact_solver.h): pseudo
 // velocities that move the shapes apart and are then forgotten (split impulses); an
@@ -81,7 +81,7 @@ struct WorldSettings {
     // With no borders around the canvas, a shape that falls off would be simulated for
     // ever, unseen; so a shape whose centre leaves the canvas is removed.
     bool remove_out_of_bounds = true;
-    // This stage's grid, unless a scene asks for the book's bounding circles (or for
+    // 5.2's grid, unless a scene asks for the book's bounding circles (or for
     // no broad phase at all).
     BroadPhaseKind broad_phase = BroadPhaseKind::grid;
     // Each fixed step runs as this many steps of dt / substeps.
@@ -99,7 +99,7 @@ struct WorldSettings {
     PositionMethod position_method = PositionMethod::split_impulse;
     double position_rate = kPositionRate;
     double slop = kSlop;
-    // This stage's sleeping, on unless a scene turns it off; with it off every scene runs
+    // 5.5's sleeping, on unless a scene turns it off; with it off every scene runs
     // as in 5.4, bit for bit. The slop above is also the overlap the sleep rule forgives.
     bool sleep = true;
     double sleep_speed = kSleepSpeed;     // px/s

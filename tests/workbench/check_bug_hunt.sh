@@ -48,7 +48,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPHYSICS_WERROR=ON "${launcher[@
   { cat build.log; exit 1; }
 BUG_SEED=$seed tools/workbench --bug $stage >made.log
 [[ -f $hunt/.bug && -f $hunt/README.md ]] || fail "no $hunt with its .bug and README.md"
-differing=$(diff -rq --exclude=README.md --exclude=expected --exclude=.bug --exclude=main.cpp "$ours" "$hunt" || true)
+differing=$(diff -rq --exclude=README.md --exclude=STEP --exclude=expected --exclude=.bug --exclude=main.cpp "$ours" "$hunt" || true)
 [[ "$differing" == "Files $ours/$file and $hunt/$file differ" ]] || fail "not one file planted: $differing"
 [[ $(diff "$ours/$file" "$hunt/$file" | grep -c '^[<>]') -eq 2 ]] || fail "$file: more than one line changed"
 grep -qrF -- "$name" "$hunt" && fail "the folder names its bug"

@@ -28,7 +28,7 @@ expect() {  # expect <log> <Passed|Failed> <test>...
 }
 # Runs stage <wb>'s tests into <log>; ctest's own status does not matter, the verdicts do.
 run_tests() { ctest --test-dir build -L "^$1\$" -j "$jobs" --output-on-failure >"$2" 2>&1 || true; }
-# The features add_stage lists for stage <id>, through tools/workbench's own reading.
+# The features stages.txt gives stage <id>, through tools/workbench's own reading.
 features_of() { grep -E "^- (New in|From the projects before)" "workbench/$1/README.md" | grep -oE '`wb_s[0-9_]+\.[a-z_]+`' | tr -d '`'; }
 
 echo "== refusals"
@@ -57,7 +57,7 @@ for number in 3.3 4.3 1.1; do tools/workbench "$number" >/dev/null; done
 refused "already exists" 3.3
 [[ -f workbench/3.3_rectangle_collision/README.md && -f workbench/4.3_collision_impulse/README.md ]] ||
   fail "no README"
-diff -r --exclude=README.md --exclude=expected --exclude=main.cpp ch3_collision/3.2_circle_collision \
+diff -r --exclude=README.md --exclude=STEP --exclude=expected --exclude=main.cpp ch3_collision/3.2_circle_collision \
   workbench/3.3_rectangle_collision >/dev/null || fail "workbench/3.3 is not 3.2's copy"
 grep -q '\.id = "wb_s3_3"' workbench/3.3_rectangle_collision/main.cpp || fail "3.3's main.cpp does not run as wb_s3_3"
 grep -q '^- New in 3.3, failing until you write it: `wb_s3_3.rectangle_collision`.$' \
