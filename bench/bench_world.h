@@ -12,7 +12,7 @@
 
 namespace bench {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // One body as the measures see it, in the scene's units (px, s, rad). The outline is
 // the collision oracle's, so overlaps are worked out without the engine's own code.

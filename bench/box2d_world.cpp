@@ -17,14 +17,14 @@ Vec2 pixels(b2Vec2 m) { return Vec2{m.x, m.y} * kPixelsPerMetre; }
 // Box2D rounds every polygon's corners by b2_polygonRadius (a skin that keeps resting
 // polygons from touching core to core), so a box whose core is that much smaller on
 // every side has the scene's size where it meets others.
-b2Vec2 core_half_size(const browser::BodyDescription& box) {
+b2Vec2 core_half_size(const bench::BodyDescription& box) {
     return {static_cast<float>(box.width / 2 / kPixelsPerMetre) - b2_polygonRadius,
             static_cast<float>(box.height / 2 / kPixelsPerMetre) - b2_polygonRadius};
 }
 
 // The area Box2D weighs: the core of a box, the whole of a disc.
-double area_m2(const browser::BodyDescription& body) {
-    if (body.shape == browser::ShapeKind::circle) {
+double area_m2(const bench::BodyDescription& body) {
+    if (body.shape == bench::Shape::circle) {
         const double r = body.radius / kPixelsPerMetre;
         return std::numbers::pi * r * r;
     }
@@ -41,7 +41,7 @@ public:
         // Box2D makes contacts slower than this inelastic, so that resting bodies stop
         // bouncing; with no gravity nothing rests, and every collision should bounce.
         const bool resting_possible = scene.world.gravity != Vec2{};
-        for (const browser::BodyDescription& body : scene.bodies) add(body, resting_possible);
+        for (const bench::BodyDescription& body : scene.bodies) add(body, resting_possible);
     }
 
     Snapshot snapshot() const override {
@@ -49,10 +49,10 @@ public:
         bodies.reserve(bodies_.size());
         for (std::size_t i = 0; i < bodies_.size(); ++i) {
             const b2Body& body = *bodies_[i];
-            const browser::BodyDescription& description = descriptions_[i];
+            const bench::BodyDescription& description = descriptions_[i];
             const Vec2 center = pixels(body.GetPosition());
             oracle::Shape shape = oracle::Disc{center, description.radius};
-            if (description.shape == browser::ShapeKind::rectangle) {
+            if (description.shape == bench::Shape::rectangle) {
                 shape = oracle::Box{center, description.width, description.height, body.GetAngle()};
             }
             const bool fixed = body.GetType() == b2_staticBody;
@@ -72,7 +72,7 @@ protected:
     }
 
 private:
-    void add(const browser::BodyDescription& description, bool resting_possible) {
+    void add(const bench::BodyDescription& description, bool resting_possible) {
         b2BodyDef definition;
         const bool fixed = description.mass == 0.0;
         definition.type = fixed ? b2_staticBody : b2_dynamicBody;
@@ -85,7 +85,7 @@ private:
         b2PolygonShape box;
         b2CircleShape disc;
         b2FixtureDef fixture;
-        if (description.shape == browser::ShapeKind::circle) {
+        if (description.shape == bench::Shape::circle) {
             disc.m_radius = static_cast<float>(description.radius / kPixelsPerMetre);
             fixture.shape = &disc;
         } else {
@@ -104,7 +104,7 @@ private:
 
     b2World world_;
     float dt_;
-    std::vector<browser::BodyDescription> descriptions_;
+    std::vector<bench::BodyDescription> descriptions_;
     std::vector<b2Body*> bodies_;  // owned by world_, in scene order
 };
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "contact_sheet.h"  // shrink
-#include "page.h"           // draw_text
+#include "text.h"           // draw_text
 
 namespace bench::chart {
 namespace {

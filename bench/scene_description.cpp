@@ -28,6 +28,8 @@ std::string_view spelling(PositionMethod method) {
     return "";
 }
 
+std::string_view spelling(Shape shape) { return shape == Shape::circle ? "circle" : "rectangle"; }
+
 int substeps_of(const WorldDescription& world) { return world.substeps.value_or(1); }
 
 }  // namespace bench

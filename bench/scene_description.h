@@ -13,12 +13,11 @@
 #include <string_view>
 #include <vector>
 
-#include "scene_file.h"
 #include "vec2.h"
 
 namespace bench {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // The choices of the stages after the book, spelled as in scene files
 // (docs/scene_format.md).
@@ -67,9 +66,31 @@ struct WorldDescription {
 // Sub-steps per fixed step: none asked for is one.
 int substeps_of(const WorldDescription& world);
 
+// A body of a scene, with the book's RigidShape parameters, the same in every chapter 5
+// stage (each stage declares them for its scene files, scene_io.cpp: the stages' tests
+// hold this against theirs, tests/bench/scenes_test.cpp).
+enum class Shape { rectangle, circle };
+std::string_view spelling(Shape shape);
+
+struct BodyDescription {
+    Shape shape = Shape::rectangle;
+    Vec2 center;
+    double width = 0.0;   // rectangles only
+    double height = 0.0;  // rectangles only
+    double radius = 0.0;  // circles only
+    double mass = 1.0;    // 0 makes the body static
+    double friction = 0.8;
+    double restitution = 0.2;
+    double angle = 0.0;  // rad
+    Vec2 velocity;
+    double angular_velocity = 0.0;  // rad/s
+
+    friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
+};
+
 struct SceneDescription {
     WorldDescription world;
-    std::vector<browser::BodyDescription> bodies;
+    std::vector<BodyDescription> bodies;
 };
 
 }  // namespace bench

@@ -5,6 +5,8 @@
 #include <system_error>
 
 #include "png_io.h"  // FileError
+#include "scene_file.h"
+#include "stages.h"
 
 namespace bench {
 namespace {
@@ -28,9 +30,9 @@ std::string word(std::string_view text) {
 }
 
 // Size, mass, friction and restitution always; angle and motion only when not 0.
-std::string body_json(const browser::BodyDescription& b) {
-    std::string text = "{\"shape\": " + word(browser::shape_name(b.shape)) + ", \"center\": " + vector(b.center);
-    if (b.shape == browser::ShapeKind::circle) {
+std::string body_json(const BodyDescription& b) {
+    std::string text = "{\"shape\": " + word(spelling(b.shape)) + ", \"center\": " + vector(b.center);
+    if (b.shape == Shape::circle) {
         text += ", \"radius\": " + number(b.radius);
     } else {
         text += ", \"width\": " + number(b.width) + ", \"height\": " + number(b.height);
@@ -41,23 +43,6 @@ std::string body_json(const browser::BodyDescription& b) {
     if (b.velocity != Vec2{}) text += ", \"velocity\": " + vector(b.velocity);
     if (b.angular_velocity != 0.0) text += ", \"angular_velocity\": " + number(b.angular_velocity);
     return text + "}";
-}
-
-// The book's world keys, bound to the description's fields, with the rules every
-// stage reads them by.
-std::vector<browser::WorldKey> book_keys(WorldDescription& world) {
-    namespace rules = browser::rules;
-    return {
-        {"width", world.width, rules::kCanvasSize},
-        {"height", world.height, rules::kCanvasSize},
-        {"gravity", world.gravity},
-        {"dt", world.dt, rules::kTimeStep},
-        {"movement", world.movement},
-        {"relaxation_iterations", world.relaxation_iterations, rules::kPassCount},
-        {"correction_rate", world.correction_rate, rules::kFraction},
-        {"positional_correction", world.positional_correction},
-        {"remove_out_of_bounds", world.remove_out_of_bounds},
-    };
 }
 
 std::string world_json(const WorldDescription& world) {
@@ -122,9 +107,7 @@ void write_scene(const std::filesystem::path& file, const SceneDescription& scen
 }
 
 SceneDescription read_scene(const std::filesystem::path& file) {
-    SceneDescription scene;
-    scene.bodies = browser::load_scene(file, book_keys(scene.world));
-    return scene;
+    return stage_engine(Stage::s5_1)->read_scene(browser::scene_text(file), file.string());
 }
 
 }  // namespace bench

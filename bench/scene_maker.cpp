@@ -12,9 +12,6 @@
 namespace bench::scenes {
 namespace {
 
-using browser::BodyDescription;
-using browser::ShapeKind;
-
 // Each scene has its own seed, so changing one scene never changes another.
 constexpr std::uint64_t kRainSeed = 101;
 constexpr std::uint64_t kGasSeed = 102;
@@ -36,7 +33,7 @@ WorldDescription world_of(double width, double height, std::optional<double> gra
 // A body's fields as a reader reads them, which the layout would put one a line:
 // clang-format off
 BodyDescription fixed_box(Vec2 center, double width, double height, double friction, double restitution) {
-    return {.shape = ShapeKind::rectangle, .center = center, .width = width, .height = height, .mass = 0.0,
+    return {.shape = Shape::rectangle, .center = center, .width = width, .height = height, .mass = 0.0,
             .friction = friction, .restitution = restitution};
 }
 // clang-format on
@@ -57,13 +54,13 @@ BodyDescription random_shape(browser::Random& random, Vec2 center, SizeRange box
     BodyDescription body;
     body.center = center;
     if (random.next() < 0.5) {
-        body.shape = ShapeKind::rectangle;
+        body.shape = Shape::rectangle;
         body.width = uniform(random, box_sides.low, box_sides.high);
         body.height = uniform(random, box_sides.low, box_sides.high);
         body.angle = uniform(random, 0.0, std::numbers::pi);
         body.mass = body.width * body.height / unit_area;
     } else {
-        body.shape = ShapeKind::circle;
+        body.shape = Shape::circle;
         body.radius = uniform(random, disc_across.low, disc_across.high) / 2;
         body.mass = std::numbers::pi * body.radius * body.radius / unit_area;
     }
@@ -102,7 +99,7 @@ SceneDescription pyramid(int rows) {
         for (int k = 0; k < boxes; ++k) {
             const double x = middle + (k - (boxes - 1) / 2.0) * kPitch;
             scene.bodies.push_back(
-                {.shape = ShapeKind::rectangle, .center = {x, y}, .width = kSide, .height = kSide, .restitution = 0.0});
+                {.shape = Shape::rectangle, .center = {x, y}, .width = kSide, .height = kSide, .restitution = 0.0});
         }
     }
     return scene;
@@ -152,7 +149,7 @@ SceneDescription gas() {
             const Vec2 center{inside + (column + 0.5) * pitch_x + uniform(random, -10.0, 10.0),
                               inside + (row + 0.5) * pitch_y + uniform(random, -10.0, 10.0)};
             const double heading = uniform(random, 0.0, 2 * std::numbers::pi);
-            scene.bodies.push_back({.shape = ShapeKind::circle, .center = center, .radius = 10.0, .friction = 0.0,
+            scene.bodies.push_back({.shape = Shape::circle, .center = center, .radius = 10.0, .friction = 0.0,
                                     .restitution = 1.0,
                                     .velocity = Vec2{std::cos(heading), std::sin(heading)} * kSpeed});
         }
@@ -163,7 +160,7 @@ SceneDescription gas() {
 SceneDescription projectile() {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0, kProjectileGravity);
-    scene.bodies.push_back({.shape = ShapeKind::circle, .center = {100.0, 400.0}, .radius = 5.0,
+    scene.bodies.push_back({.shape = Shape::circle, .center = {100.0, 400.0}, .radius = 5.0,
                             .velocity = {150.0, -150.0}});
     return scene;
 }
@@ -173,7 +170,7 @@ SceneDescription slide() {
     scene.world = world_of(1500.0, 450.0, kSlideGravity);
     constexpr double kFloorTop = 390.0;
     scene.bodies.push_back(fixed_box({750.0, kFloorTop + kWall / 2}, 1400.0, kWall, kSlideFriction, 0.0));
-    scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {150.0, kFloorTop - 10.0}, .width = 40.0,
+    scene.bodies.push_back({.shape = Shape::rectangle, .center = {150.0, kFloorTop - 10.0}, .width = 40.0,
                             .height = 20.0, .friction = kSlideFriction, .restitution = 0.0,
                             .velocity = {kSlideSpeed, 0.0}});
     return scene;
@@ -183,9 +180,9 @@ SceneDescription heavy_on_light(double heavy) {
     SceneDescription scene;
     scene.world = world_of(800.0, 450.0);
     scene.bodies.push_back(fixed_box({400.0, 430.0}, 600.0, 20.0, 0.8, 0.2));
-    scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {400.0, 409.75}, .width = 100.0, .height = 20.0,
+    scene.bodies.push_back({.shape = Shape::rectangle, .center = {400.0, 409.75}, .width = 100.0, .height = 20.0,
                             .mass = 1.0, .friction = 0.8, .restitution = 0.2});
-    scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {400.0, 369.5}, .width = 60.0, .height = 60.0,
+    scene.bodies.push_back({.shape = Shape::rectangle, .center = {400.0, 369.5}, .width = 60.0, .height = 60.0,
                             .mass = heavy, .friction = 0.8, .restitution = 0.2});
     return scene;
 }
@@ -204,7 +201,7 @@ SceneDescription slope() {
     const Vec2 out_of_face{std::sin(kSlopeAngle), -std::cos(kSlopeAngle)};
     const Vec2 center = ramp.center - down_slope * 200.0 + out_of_face * (kWall / 2 + kRadius);
     scene.bodies.push_back(
-        {.shape = ShapeKind::circle, .center = center, .radius = kRadius, .friction = 0.8, .restitution = 0.0});
+        {.shape = Shape::circle, .center = center, .radius = kRadius, .friction = 0.8, .restitution = 0.0});
     return scene;
 }
 
@@ -215,7 +212,7 @@ SceneDescription thin_wall() {
     scene.world = world_of(800.0, 450.0, 0.0);
     scene.bodies.push_back(fixed_box({400.0, 225.0}, kWallThickness, 200.0, 0.0, 0.5));
     const double x = 400.0 - kWallThickness / 2 - kWallGap - kWallBallRadius;
-    scene.bodies.push_back({.shape = ShapeKind::circle, .center = {x, 225.0}, .radius = kWallBallRadius,
+    scene.bodies.push_back({.shape = Shape::circle, .center = {x, 225.0}, .radius = kWallBallRadius,
                             .friction = 0.0, .restitution = 0.5, .velocity = {1500.0, 0.0}});
     return scene;
 }
@@ -247,7 +244,7 @@ SceneDescription spread(int shapes) {
     scene.world = world_of(side, side, 0.0);
     for (int i = 0; i < shapes; ++i) {
         const Vec2 cell{kMargin + (i % columns + 0.5) * kPitch, kMargin + (i / columns + 0.5) * kPitch};
-        scene.bodies.push_back({.shape = ShapeKind::circle, .center = cell, .radius = kRadius});
+        scene.bodies.push_back({.shape = Shape::circle, .center = cell, .radius = kRadius});
     }
     return scene;
 }
@@ -259,17 +256,17 @@ SceneDescription pair(PairKind kind) {
     scene.world = world_of(800.0, 450.0);
     constexpr double kTop = 290.0;  // the top of the static shape
     if (kind == PairKind::circle_circle) {
-        scene.bodies.push_back({.shape = ShapeKind::circle, .center = {400.0, kTop + 40.0}, .radius = 40.0,
+        scene.bodies.push_back({.shape = Shape::circle, .center = {400.0, kTop + 40.0}, .radius = 40.0,
                                 .mass = 0.0, .restitution = 0.0});
     } else {
         scene.bodies.push_back(fixed_box({400.0, kTop + kWall / 2}, 200.0, kWall, 0.8, 0.0));
     }
     if (kind == PairKind::rect_rect) {
-        scene.bodies.push_back({.shape = ShapeKind::rectangle, .center = {400.0, kTop - 20.0}, .width = 40.0,
+        scene.bodies.push_back({.shape = Shape::rectangle, .center = {400.0, kTop - 20.0}, .width = 40.0,
                                 .height = 40.0, .restitution = 0.0});
     } else {
         scene.bodies.push_back(
-            {.shape = ShapeKind::circle, .center = {400.0, kTop - 20.0}, .radius = 20.0, .restitution = 0.0});
+            {.shape = Shape::circle, .center = {400.0, kTop - 20.0}, .radius = 20.0, .restitution = 0.0});
     }
     return scene;
 }

@@ -52,7 +52,7 @@ double substeps(const Settings& settings) {
 
 class StageWorld final : public BenchWorld {
 public:
-    StageWorld(const engine::WorldSettings& settings, const std::vector<browser::BodyDescription>& bodies)
+    StageWorld(const engine::WorldSettings& settings, const std::vector<engine::BodyDescription>& bodies)
         : window_(settings.dt * 1000.0,
                   browser::Document{browser::Canvas(pixels(settings.width), pixels(settings.height))}),
           core_(window_, settings) {
@@ -108,9 +108,34 @@ private:
 
 // The world as the stage reads it from the scene JSON of `world`.
 engine::WorldSettings settings_of(const WorldDescription& world) {
-    engine::WorldSettings settings = engine::kBookWorld;
-    browser::read_scene_text(scene_json({world, {}}), kSource, engine::worldKeys(settings));
-    return settings;
+    return engine::readScene(scene_json({world, {}}), kSource).world;
+}
+
+// The book's keys of the stage's world, as the bench describes them.
+WorldDescription book_keys_of(const engine::WorldSettings& world) {
+    return {.width = world.width,
+            .height = world.height,
+            .gravity = world.gravity,
+            .dt = world.dt,
+            .movement = world.movement,
+            .relaxation_iterations = world.relaxation_iterations,
+            .correction_rate = world.correction_rate,
+            .positional_correction = world.positional_correction,
+            .remove_out_of_bounds = world.remove_out_of_bounds};
+}
+
+BodyDescription body_of(const engine::BodyDescription& body) {
+    return {.shape = body.shape == engine::ShapeType::Circle ? Shape::circle : Shape::rectangle,
+            .center = body.center,
+            .width = body.width,
+            .height = body.height,
+            .radius = body.radius,
+            .mass = body.mass,
+            .friction = body.friction,
+            .restitution = body.restitution,
+            .angle = body.angle,
+            .velocity = body.velocity,
+            .angular_velocity = body.angular_velocity};
 }
 
 class Adapter final : public StageEngine {
@@ -118,27 +143,22 @@ public:
     std::vector<std::string> world_keys() const override {
         engine::WorldSettings settings = engine::kBookWorld;
         std::vector<std::string> names;
-        for (const browser::WorldKey& key : engine::worldKeys(settings)) names.emplace_back(key.name());
+        for (const browser::SceneKey& key : engine::worldKeys(settings)) names.emplace_back(key.name());
         return names;
     }
 
-    WorldDescription book_world() const override {
-        const engine::WorldSettings& book = engine::kBookWorld;
-        return {.width = book.width,
-                .height = book.height,
-                .gravity = book.gravity,
-                .dt = book.dt,
-                .movement = book.movement,
-                .relaxation_iterations = book.relaxation_iterations,
-                .correction_rate = book.correction_rate,
-                .positional_correction = book.positional_correction,
-                .remove_out_of_bounds = book.remove_out_of_bounds};
-    }
+    WorldDescription book_world() const override { return book_keys_of(engine::kBookWorld); }
 
     std::unique_ptr<BenchWorld> world(const SceneDescription& scene) const override {
-        engine::WorldSettings settings = engine::kBookWorld;
-        const auto bodies = browser::read_scene_text(scene_json(scene), kSource, engine::worldKeys(settings));
-        return std::make_unique<StageWorld>(settings, bodies);
+        const engine::Scene read = engine::readScene(scene_json(scene), kSource);
+        return std::make_unique<StageWorld>(read.world, read.bodies);
+    }
+
+    SceneDescription read_scene(const std::string& text, std::string_view source) const override {
+        const engine::Scene read = engine::readScene(text, source);
+        SceneDescription scene{.world = book_keys_of(read.world)};
+        for (const engine::BodyDescription& body : read.bodies) scene.bodies.push_back(body_of(body));
+        return scene;
     }
 
     bool same_settings(const WorldDescription& a, const WorldDescription& b) const override {

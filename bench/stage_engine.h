@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_world.h"
@@ -26,6 +27,10 @@ public:
     // stage's own world keys. Throws browser::SceneError, in the words of the stage's
     // program, for a key the stage does not read or a value it refuses.
     virtual std::unique_ptr<BenchWorld> world(const SceneDescription& scene) const = 0;
+    // A scene's text read as the stage's program reads a scene file, in the bench's terms:
+    // the book's world keys and the bodies. `source` stands for the file in a refusal.
+    // Throws browser::SceneError.
+    virtual SceneDescription read_scene(const std::string& text, std::string_view source) const = 0;
     // Whether the stage reads the two worlds as the same settings: a key left unset is the
     // same as the stage's default written out. Throws browser::SceneError as world() does.
     virtual bool same_settings(const WorldDescription& a, const WorldDescription& b) const = 0;

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "box2d_world.h"
+#include "scene_file.h"  // SceneError
 #include "scene_json.h"
 
 namespace bench {

@@ -22,12 +22,12 @@ Layout layout_of(const SceneDescription& scene) {
     bool ball_found = false;
     bool wall_found = false;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-        const browser::BodyDescription& body = scene.bodies[i];
-        if (body.mass > 0 && body.shape == browser::ShapeKind::circle && !ball_found) {
+        const bench::BodyDescription& body = scene.bodies[i];
+        if (body.mass > 0 && body.shape == bench::Shape::circle && !ball_found) {
             layout.ball = i;
             layout.ball_radius = body.radius;
             ball_found = true;
-        } else if (body.mass == 0 && body.shape == browser::ShapeKind::rectangle && !wall_found) {
+        } else if (body.mass == 0 && body.shape == bench::Shape::rectangle && !wall_found) {
             layout.far_side = body.center.x + body.width / 2;
             wall_found = true;
         }

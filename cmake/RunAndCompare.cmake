@@ -9,6 +9,14 @@
 # EXPECT=different (optional) turns the test round: it passes only when some picture
 # differs (cmake/StrictPictures.cmake: a stage's engine on the next stage's pictures).
 # compare_png prints, for each picture, how many pixels differ and the box they are in.
+# A program not built yet is said so, with the target that builds it, rather than
+# failing with "No such file" (each stage's target builds its program and compare_png).
+foreach(needed PROGRAM COMPARE)
+  if(NOT EXISTS ${${needed}})
+    get_filename_component(target ${${needed}} NAME)
+    message(FATAL_ERROR "${${needed}} is not built: cmake --build <build folder> --target ${target}")
+  endif()
+endforeach()
 file(REMOVE_RECURSE ${ACTUAL})
 execute_process(COMMAND ${PROGRAM} ${ARGUMENTS} --out ${ACTUAL} ${AFTER} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
@@ -23,5 +31,9 @@ if(EXPECT STREQUAL "different")
     message(FATAL_ERROR "compare_png could not compare the pictures (status ${status})")
   endif()
 elseif(NOT status EQUAL 0)
-  message(FATAL_ERROR "pictures differ from ${EXPECTED}; see ${ACTUAL}/diff")
+  set(where "the run's pictures are in ${ACTUAL}")
+  if(IS_DIRECTORY ${ACTUAL}/diff)
+    string(APPEND where ", the differences in red in ${ACTUAL}/diff")
+  endif()
+  message(FATAL_ERROR "pictures differ from ${EXPECTED} (above: which, and by how much); ${where}")
 endif()

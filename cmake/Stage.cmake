@@ -73,7 +73,9 @@ endfunction()
 #   <id>_tests         tests/features/<feature>_test.cpp for each listed feature, compiled
 #                      against this folder's headers, plus tests/stages/<id>_test.cpp
 #                      (only when Catch2 was found: PHYSICS_TESTS)
-#   <id>               builds the three above: `cmake --build build --target <id>`
+#   <id>               builds the three above and compare_png, all that the tests
+#                      labelled <id> run: `cmake --build build --target <id>`, then
+#                      `ctest --test-dir build -L '^<id>$'`
 # and registers with CTest, all labelled <id> and <chN>:
 #   <id>.<feature>     one test per feature file, also labelled <feature>
 #   <id>.stage         the stage's own tests
@@ -89,6 +91,17 @@ endfunction()
 # can build a reader's own copy of the stage and judge it by the same tests.
 function(add_stage id)
   cmake_parse_arguments(PARSE_ARGV 1 STAGE "" "FOLDER;PROGRAM;CHAPTER" "FEATURES")
+  # Every feature says in cmake/features.txt what it checks, in the book's words, and
+  # whether it is the book's or ours: the workbench names a reader's checks by it.
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/features.txt)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/cmake/features.txt described REGEX "^[a-z_]+ [|] (book|ours) [|] .")
+  list(TRANSFORM described REPLACE " [|] .*" "")
+  foreach(feature IN LISTS STAGE_FEATURES)
+    if(NOT feature IN_LIST described)
+      message(FATAL_ERROR "add_stage(${id}): feature ${feature} has no line in cmake/features.txt "
+                          "(${feature} | book or ours | what it checks, in the book's words)")
+    endif()
+  endforeach()
   set_property(GLOBAL APPEND PROPERTY PHYSICS_STAGES ${id})
   foreach(key FOLDER PROGRAM CHAPTER FEATURES)
     set_property(GLOBAL PROPERTY PHYSICS_STAGE_${id}_${key} "${STAGE_${key}}")
@@ -107,7 +120,11 @@ function(add_stage id)
     # Every test file includes Catch2's 17,000-line header: parse it once for every stage.
     target_precompile_headers(${id}_tests REUSE_FROM ${catch_pch})
     test_files_together(${id}_tests)
-    add_custom_target(${id} DEPENDS ${program} ${id}_tests)
+    # Some tests run the program (--help, scene files, dumps): building the tests builds
+    # it, so they never run one older than its sources.
+    add_dependencies(${id}_tests ${program})
+    add_custom_target(${id})
+    add_dependencies(${id} ${program} ${id}_tests compare_png)
 
     foreach(feature IN LISTS STAGE_FEATURES)
       add_test(NAME ${id}.${feature} COMMAND ${id}_tests "-#" "[#${feature}_test]")
@@ -118,7 +135,8 @@ function(add_stage id)
       set_tests_properties(${id}.stage PROPERTIES LABELS "${labels};stage")
     endif()
   else()
-    add_custom_target(${id} DEPENDS ${program})
+    add_custom_target(${id})
+    add_dependencies(${id} ${program} compare_png)
   endif()
 
   add_test(NAME ${id}.pictures

@@ -76,6 +76,18 @@ function(add_workbench_stage stage folder)
   add_custom_target(${id} DEPENDS ${program} compare_png)
 
   set(log_dir ${CMAKE_BINARY_DIR}/workbench/${id})
+  # What each feature checks, in the book's words (cmake/features.txt): a failure says it first.
+  file(STRINGS ${PROJECT_SOURCE_DIR}/cmake/features.txt feature_lines REGEX "^[a-z]")
+  foreach(line IN LISTS feature_lines)
+    string(REPLACE " | " ";" fields "${line}")
+    list(GET fields 0 name)
+    list(GET fields 1 whose)
+    list(GET fields 2 concept)
+    if(whose STREQUAL "ours")
+      set(concept "ours, not the book's: ${concept}")
+    endif()
+    set(concept_of_${name} "${concept}")
+  endforeach()
   # Not the chapter's label nor the features': `ctest -L ch3` stays our stages' tests.
   set(labels ${id} workbench)
   set(judged)  # test name, target, what it is, the book project it comes from; 4 per test
@@ -86,7 +98,7 @@ function(add_workbench_stage stage folder)
     else()  # older than this stage, whose project can still change what it expects (scene keys)
       set(book "${BOOK_${origin}}, and this stage is ${BOOK_${stage}}")
     endif()
-    list(APPEND judged ${feature} ${id}_test_${feature} "feature ${feature}" "${book}")
+    list(APPEND judged ${feature} ${id}_test_${feature} "${concept_of_${feature}} (feature ${feature})" "${book}")
     add_workbench_tests(${id}_test_${feature} ${PROJECT_SOURCE_DIR}/tests/features/${feature}_test.cpp
       ${stage} ${id} ${program})
   endforeach()
@@ -98,6 +110,7 @@ function(add_workbench_stage stage folder)
 
   set(targets ${program} compare_png)
   set(script ${PROJECT_SOURCE_DIR}/cmake/WorkbenchTest.cmake)
+  set(explain "bash;${PROJECT_SOURCE_DIR}/tools/workbench;--explain;${number}")
   list(LENGTH judged left)
   while(left GREATER 0)
     list(POP_FRONT judged test target what book)
@@ -110,7 +123,7 @@ function(add_workbench_stage stage folder)
     add_test(NAME ${id}.${test}
       COMMAND ${CMAKE_COMMAND} -DTEST=${id}.${test} "-DWHAT=${what}" "-DBOOK=${book}"
         -DLOG=${log_dir}/${target} -DPROGRAM=$<TARGET_FILE:${target}> "-DFILTER=${tag}"
-        -P ${script})
+        -DVERDICT=${log_dir}/verdicts/${test} "-DEXPLAIN=${explain}" -P ${script})
     # Work in progress can loop for ever: 15 minutes is far more than any of our tests needs.
     set_tests_properties(${id}.${test} PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
     list(LENGTH judged left)
@@ -120,7 +133,7 @@ function(add_workbench_stage stage folder)
     COMMAND ${CMAKE_COMMAND} -DTEST=${id}.pictures "-DWHAT=the program ${program}" "-DBOOK=${BOOK_${stage}}"
       -DLOG=${log_dir}/${program} -DPROGRAM=$<TARGET_FILE:${program}> -DCOMPARE=$<TARGET_FILE:compare_png>
       -DEXPECTED=${PROJECT_SOURCE_DIR}/${FOLDER}/expected -DACTUAL=${CMAKE_BINARY_DIR}/pictures/${id}
-      -P ${script})
+      -DVERDICT=${log_dir}/verdicts/pictures -P ${script})
   set_tests_properties(${id}.pictures PROPERTIES LABELS "${labels}" FIXTURES_REQUIRED ${id} TIMEOUT 900)
 
   # The engine first, when it has sources: if it does not build, nothing else can.
@@ -140,9 +153,16 @@ function(add_workbench_stage stage folder)
 endfunction()
 
 # One test program: <source> against the reader's engine, as our stage's tests are built.
+# When its tests run the stage's program (stage_program.h, walkthrough.h), building it
+# builds the program too, so that --check never runs a program older than its sources;
+# the others do not wait for main.cpp.
 function(add_workbench_tests target source stage id program)
   add_executable(${target} EXCLUDE_FROM_ALL ${source})
   stage_test_program(${target} ${stage} ${id}_engine ${program})
+  file(READ ${source} text)
+  if(text MATCHES "stage_program\\.h|walkthrough\\.h|STAGE_PROGRAM")
+    add_dependencies(${target} ${program})
+  endif()
   shared_catch_pch(catch_pch)
   target_precompile_headers(${target} REUSE_FROM ${catch_pch})
 endfunction()

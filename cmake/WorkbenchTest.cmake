@@ -2,10 +2,14 @@
 # (cmake/WorkbenchBuild.cmake) has tried to build its program. It fails, naming the
 # book's project to read, when the program did not build; otherwise it runs the tests
 # (FILTER, a Catch2 tag) or the default run whose pictures it compares (COMPARE).
-#   -DTEST= -DWHAT= -DBOOK= -DLOG=<log dir>/<target> -DPROGRAM=
+#   -DTEST= -DWHAT= -DBOOK= -DLOG=<log dir>/<target> -DPROGRAM= -DVERDICT=<file>
+#   [-DEXPLAIN=<command>: prints a build log's first error in the book's words]
 #   then -DFILTER=   or   -DCOMPARE= -DEXPECTED= -DACTUAL=
+# VERDICT gets "passed" or "failed", which tools/workbench --list reads (as --check
+# writes it too), so that listing the stages runs nothing.
 # The reason, first and as it is (FATAL_ERROR would rewrap it), then the failure.
 function(fail text)
+  file(WRITE ${VERDICT} "failed\n")
   message(NOTICE "${TEST}: ${text}")
   message(FATAL_ERROR "${TEST} failed")
 endfunction()
@@ -28,8 +32,18 @@ if(NOT status EQUAL 0)
   else()
     set(WHAT "${WHAT} does not build yet")
   endif()
+  # Which of the book's names the error is about (tools/workbench --explain, names.md).
+  set(explained "")
+  if(DEFINED EXPLAIN)
+    execute_process(COMMAND ${EXPLAIN} ${LOG}.log OUTPUT_VARIABLE explained ERROR_QUIET)
+    string(REGEX REPLACE "\n$" "" explained "${explained}")
+    string(REPLACE "\n" "\n  " explained "${explained}")
+    if(explained)
+      set(explained "\n  ${explained}")
+    endif()
+  endif()
   fail("${WHAT}; it comes from ${BOOK}.
-  first error: ${first_error}
+  first error: ${first_error}${explained}
   everything the build said: ${LOG}.log")
 endif()
 
@@ -41,8 +55,12 @@ if(DEFINED COMPARE)
   endif()
   execute_process(COMMAND ${COMPARE} ${EXPECTED} ${ACTUAL} --diff-dir ${ACTUAL}/diff RESULT_VARIABLE status)
   if(NOT status EQUAL 0)
-    fail("the pictures of ${WHAT} differ from ours in ${EXPECTED} (above: by how much,
-  in red: ${ACTUAL}/diff); they come from ${BOOK}")
+    set(where "yours are in ${ACTUAL}")
+    if(IS_DIRECTORY ${ACTUAL}/diff)
+      string(APPEND where ", the differences in red in ${ACTUAL}/diff")
+    endif()
+    fail("the pictures of ${WHAT} differ from ours in ${EXPECTED} (above: by how much;
+  ${where}); they come from ${BOOK}")
   endif()
 else()
   execute_process(COMMAND ${PROGRAM} "-#" ${FILTER} RESULT_VARIABLE status)
@@ -50,3 +68,4 @@ else()
     fail("${WHAT} fails (the checks above say where); it comes from ${BOOK}")
   endif()
 endif()
+file(WRITE ${VERDICT} "passed\n")

@@ -90,7 +90,7 @@ public:
         }
     }
 
-    // The one line a successful run prints, e.g. "wrote 3 pictures to out/s2_2/
+    // The one line a successful run prints, e.g. "wrote 3 pictures to out/<id>/
     // (final.png, frame_0000.png, frame_0030.png), contact_sheet.png and
     // animation.gif (30 frames)".
     std::string summary(const fs::path& out) const {
@@ -133,7 +133,7 @@ private:
 };
 
 std::string out_of_memory_text() {
-    return "out of memory: the run needs more memory than this machine gives it (fewer shapes, frames or "
+    return "out of memory: the run needs more memory than this machine gives it (fewer objects, frames or "
            "pictures, or a smaller canvas); nothing was written";
 }
 
@@ -142,13 +142,6 @@ std::string rounded(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);
     return text;
-}
-
-// The shapes a run can have at most: those at the start, and one for each press of the
-// keys that add one (F, G: "a new rectangle / circle" in every stage).
-double most_shapes(const StepCost& step, const Options& options) {
-    static const KeySet kAddingKeys = KeySet::parse("f g");
-    return static_cast<double>(step.shapes) + static_cast<double>(options.keys.pressCount(kAddingKeys));
 }
 
 // "1 frame", "480 frames".
@@ -181,22 +174,24 @@ std::optional<std::string> drawing_excess(const Canvas& canvas, const Options& o
            " a run may (fewer --frames, a smaller canvas or --scale)";
 }
 
-std::optional<std::string> pair_excess(const StepCost& step, const Options& options) {
-    const double tests = pair_test_bound(step, options);
-    if (tests <= kMaxPairTests) return std::nullopt;
+std::optional<std::string> work_excess(const WorldCost& cost, const Options& options) {
+    const double work = work_bound(cost, options);
+    if (work <= kMaxWork) return std::nullopt;
+    std::string cheaper = "fewer --frames, key presses";
+    cheaper += cost.lighter.empty() ? " or " + cost.objects_word : ", " + cost.objects_word + ", " + cost.lighter;
     return "the run is too long: " + frames_text(options.frames) + " of up to " +
-           std::to_string(static_cast<long>(most_shapes(step, options))) + " shapes may cost " + rounded(tests) +
-           " pair tests, more than the " + rounded(kMaxPairTests) +
-           " a run may (fewer --frames, key presses, shapes, passes or sub-steps, or a longer dt)";
+           std::to_string(std::lround(cost.objects)) + " " + cost.objects_word + " may cost " + rounded(work) + " " +
+           cost.work_word + ", more than the " + rounded(kMaxWork) + " a run may (" + cheaper + ")";
 }
 
-std::optional<std::string> memory_excess(const StepCost& step, const Options& options) {
-    const double bytes = contact_memory_bound(step, options);
-    if (bytes <= kMaxContactBytes) return std::nullopt;
-    return "the run may need too much memory: up to " + std::to_string(static_cast<long>(most_shapes(step, options))) +
-           " shapes all in contact may hold " + std::to_string(std::lround(bytes / 1e6)) +
-           " MB of contacts, more than the " + std::to_string(std::lround(kMaxContactBytes / 1e6)) +
-           " MB a run may (fewer shapes or key presses that add them)";
+std::optional<std::string> memory_excess(const WorldCost& cost) {
+    if (cost.bytes <= kMaxWorldBytes) return std::nullopt;
+    std::string held = std::to_string(std::lround(cost.bytes / 1e6)) + " MB";
+    if (!cost.memory_word.empty()) held += " " + cost.memory_word;
+    return "the run may need too much memory: up to " + std::to_string(std::lround(cost.objects)) + " " +
+           cost.objects_word + " may hold " + held + ", more than the " +
+           std::to_string(std::lround(kMaxWorldBytes / 1e6)) + " MB a run may (fewer " + cost.objects_word +
+           " or key presses that add them)";
 }
 
 std::optional<std::string> encoding_excess(const Canvas& canvas, const Options& options) {
@@ -209,29 +204,20 @@ std::optional<std::string> encoding_excess(const Canvas& canvas, const Options& 
 
 // Why a run goes over its budget, in one line, or nothing when it does not: the first
 // limit it passes, in the order of browser.h.
-std::optional<std::string> over_budget(const StepCost& step, const Canvas& canvas, const Options& options) {
+std::optional<std::string> over_budget(const WorldCost& cost, const Canvas& canvas, const Options& options) {
     if (auto excess = page_excess(canvas)) return excess;
     if (auto excess = drawing_excess(canvas, options)) return excess;
-    if (auto excess = pair_excess(step, options)) return excess;
-    if (auto excess = memory_excess(step, options)) return excess;
+    if (auto excess = work_excess(cost, options)) return excess;
+    if (auto excess = memory_excess(cost)) return excess;
     return encoding_excess(canvas, options);
 }
 
 }  // namespace
 
-double pair_test_bound(const StepCost& step, const Options& options) {
+double work_bound(const WorldCost& cost, const Options& options) {
     const double run_ms = static_cast<double>(options.frames) * options.frame_ms;
-    const double steps = std::floor(run_ms / (step.dt_s * 1000.0)) + 1.0;
-    const double shapes = most_shapes(step, options);
-    const double pairs = shapes * (shapes - 1.0) / 2.0;
-    const double per_substep = std::max(step.passes, 1) * pairs + shapes;  // the passes, then every shape's move
-    const double drawn = step.draws_pairs ? static_cast<double>(options.frames) * pairs * kDrawnPairCost : 0.0;
-    return steps * std::max(step.substeps, 1) * per_substep + drawn;
-}
-
-double contact_memory_bound(const StepCost& step, const Options& options) {
-    const double shapes = most_shapes(step, options);
-    return shapes * (shapes - 1.0) / 2.0 * step.bytes_a_contact;
+    const double steps = std::floor(run_ms / (cost.step_s * 1000.0)) + 1.0;
+    return steps * cost.step_work + static_cast<double>(options.frames) * cost.frame_work;
 }
 
 double encoding_bound(double page_pixels, const Options& options) {
@@ -242,7 +228,7 @@ double encoding_bound(double page_pixels, const Options& options) {
     return page_pixels * (pictures + kGifPixelCost * gif_frames);
 }
 
-int run(PageScripts& scripts, Window& window, const Options& options) {
+int run(PageScripts& scripts, Window& window, const Options& options, const WorldCost& cost) {
     // parse_command_line never gives these; a test or a stage that builds Options by hand might.
     if (options.frames < 1 || (options.gif && options.gif_every < 1) || options.from < 0 ||
         options.from >= options.frames) {
@@ -274,7 +260,7 @@ int run(PageScripts& scripts, Window& window, const Options& options) {
         std::cerr << kNoGifSupport << '\n';
         return 2;
     }
-    if (const std::optional<std::string> excess = over_budget(scripts.stepCost(), window.document.canvas, options)) {
+    if (const std::optional<std::string> excess = over_budget(cost, window.document.canvas, options)) {
         std::cerr << *excess << '\n';
         return 2;
     }

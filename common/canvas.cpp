@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "page.h"  // draw_text, the page's font
+#include "text.h"  // draw_text, the page's font
 
 namespace browser {
 
@@ -366,7 +366,7 @@ void Canvas::restore() {
 
 // translate and rotate multiply the current matrix on the right, so the newest call acts
 // first on a point: after translate(vx, vy) then rotate(a), a point is turned about the
-// origin and then moved to (vx, vy), which is how the book places a rectangle.
+// origin and then moved to (vx, vy), which is how a page places a turned outline.
 void Canvas::translate(double dx, double dy) {
     Transform& m = transform_;
     m.e += m.a * dx + m.c * dy;

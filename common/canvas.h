@@ -68,7 +68,7 @@ public:
     // The axis-aligned rectangle (x, y, w, h), filled. Its corners pass through the
     // current transform's translation only (an overlay's boxes stay upright).
     void fillRect(double x, double y, double w, double h);
-    // One line of text in the page's font (page.h's draw_text: letters about 14 units
+    // One line of text in the page's font (text.h's draw_text: letters about 14 units
     // tall), its top-left corner at (x, y) after the current transform's translation.
     void fillText(std::string_view text, double x, double y);
 

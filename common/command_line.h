@@ -35,8 +35,8 @@ struct KeyHelp {
 
 // What a stage's program does when run with no options.
 struct StageDefaults {
-    std::string id;                          // "s1_1": names the default output folder out/<id>/
-    std::string title;                       // "1.1 HTML5 Canvas": shown by --help
+    std::string id;                          // names the default output folder out/<id>/
+    std::string title;                       // the stage's number and name: shown by --help
     std::string keys;                        // the default key script
     int frames = 1;                          // how many animation frames to run
     int every = 0;                           // also write every K-th frame (0: only the last)
@@ -60,7 +60,7 @@ struct LiveOptions {
     bool on = false;                          // --live
     std::filesystem::path record;             // --record FILE: where the session's key script goes ("" for nowhere)
     std::string title;                        // the window's title
-    std::string stage_id;                     // "s4_4": names the pages F12 saves
+    std::string stage_id;                     // names the pages F12 saves (<id>_frame_NNNN.png)
     std::filesystem::path screenshot_folder;  // where F12 saves them: the current folder ("")
     // The command that replays a recorded session, but for its --keys, --frames and
     // picture options: the program as it was called, and every option given that shapes

@@ -8,8 +8,8 @@
 //
 // By default pictures match only pixel for pixel: the page is deterministic (a simulated
 // clock, seeded randomness, one rasterizer), so our stages need no slack, and any slack
-// lets a stage that lacks a feature drawing a few pixels (3.3 without 3.4's
-// rectangle-circle lines: about 130 pixels) pass the next stage's pictures. --channel
+// lets a stage that lacks a feature drawing a few pixels (a collision test the next
+// stage adds, whose lines take about 130 pixels) pass the next stage's pictures. --channel
 // and --share are for pictures made elsewhere.
 
 #include <algorithm>
@@ -19,6 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -27,6 +28,7 @@
 #include <CLI/CLI.hpp>
 
 #include "image_compare.h"
+#include "interruption.h"
 #include "message_text.h"
 #include "output_folder.h"  // kManifest
 #include "png_io.h"
@@ -57,14 +59,31 @@ std::string region_text(const browser::PixelBox& box) {
            "-" + std::to_string(box.bottom);
 }
 
-// Whether this program wrote DIR/name before: --diff-dir lists the diff pictures it
-// writes in DIR's manifest (output_folder.h's format), and removes only those.
+// --diff-dir DIR keeps a manifest of the diff pictures it wrote there (output_folder.h's
+// format), under a first line of its own; only those it replaces or removes. A folder
+// whose manifest is another program's (a stage run's --out) is not compare_png's to
+// write in: its pictures are the run's.
+constexpr const char* kDiffManifestHeader =
+    "# compare_png --diff-dir: the diff pictures it wrote here, the only files it replaces or removes";
+
+bool is_our_manifest(const fs::path& dir) {
+    // Read only as a regular file: a FIFO would wait for ever.
+    std::error_code error;
+    if (!fs::is_regular_file(fs::symlink_status(dir / browser::kManifest, error))) return false;
+    std::ifstream manifest(dir / browser::kManifest);
+    std::string first;
+    return std::getline(manifest, first) && first == kDiffManifestHeader;
+}
+
+bool has_manifest(const fs::path& dir) {
+    std::error_code error;
+    return fs::exists(fs::symlink_status(dir / browser::kManifest, error));
+}
+
+// Whether this program wrote DIR/name before.
 bool wrote_before(const fs::path& file) {
-    std::ifstream manifest(file.parent_path() / browser::kManifest);
-    for (std::string line; std::getline(manifest, line);) {
-        if (line == file.filename().string()) return true;
-    }
-    return false;
+    const fs::path dir = file.parent_path();
+    return is_our_manifest(dir) && browser::manifest_names(dir).contains(file.filename().string());
 }
 
 // An old diff picture would mislead once the pictures match: removed when this program
@@ -78,6 +97,29 @@ void remove_old_diff(const fs::path& file) {
     }
     std::error_code ignored;
     fs::remove(file, ignored);
+}
+
+// Writes `name`'s diff picture into DIR: a new file, or one this program wrote before.
+void write_diff_in_dir(const fs::path& dir, const std::string& name, const browser::Image& diff,
+                       std::span<const fs::path> inputs) {
+    const fs::path file = dir / name;
+    browser::check_may_write(file, browser::WriteTarget::file, inputs);
+    const bool ours = wrote_before(file);
+    std::error_code error;
+    if (!ours && fs::exists(fs::symlink_status(file, error))) {
+        throw browser::OutputRefused("it holds a file compare_png did not write (not in " +
+                                     std::string(browser::kManifest) + "); move it away or name another --diff-dir");
+    }
+    if (!has_manifest(dir)) {
+        std::ofstream manifest(dir / browser::kManifest, std::ios::binary);
+        manifest << kDiffManifestHeader << '\n';
+        if (!manifest) {
+            throw fs::filesystem_error("cannot write the manifest", dir / browser::kManifest,
+                                       std::make_error_code(std::errc::io_error));
+        }
+    }
+    browser::write_png(file, diff);
+    if (!ours) browser::OutputFolder::add_to_manifest(dir, name);
 }
 
 // Compares one pair, prints its line and writes the diff picture where asked.
@@ -114,13 +156,18 @@ int compare_pair(const std::string& name, const fs::path& expected_path, const f
         }
     }
     if (diff_path) {
+        const fs::path inputs[] = {expected_path, actual_path};
         try {
-            const fs::path inputs[] = {expected_path, actual_path};
-            browser::check_may_write(*diff_path, browser::WriteTarget::file, inputs);
-            browser::write_png(*diff_path, difference.diff);
-            if (!settings.diff_dir.empty() && !wrote_before(*diff_path)) {
-                browser::OutputFolder::add_to_manifest(settings.diff_dir, name);
+            if (settings.diff_dir.empty()) {
+                browser::check_may_write(*diff_path, browser::WriteTarget::file, inputs);
+                browser::write_png(*diff_path, difference.diff);
+            } else {
+                write_diff_in_dir(settings.diff_dir, name, difference.diff, inputs);
             }
+        } catch (const browser::OutputRefused& refused) {
+            std::cerr << kProgram << ": cannot write " << browser::in_quotes(diff_path->string()) << ": "
+                      << refused.what() << "\n";
+            return kTrouble;
         } catch (const browser::FileError& error) {
             std::cerr << kProgram << ": " << error.what() << "\n";
             return kTrouble;
@@ -152,6 +199,7 @@ int compare_folders(const Settings& settings) {
 
     int status = kMatch;
     for (const std::string& name : names) {
+        browser::stop_if_interrupted();
         const fs::path actual = settings.actual / name;
         int outcome = kDifferent;
         if (fs::exists(actual, error)) outcome = compare_pair(name, settings.expected / name, actual, settings);
@@ -219,8 +267,14 @@ int main(int argc, char** argv) {
         const fs::path inputs[] = {settings.expected, settings.actual};
         if (!settings.diff_file.empty())
             browser::check_may_write(settings.diff_file, browser::WriteTarget::file, inputs);
-        if (!settings.diff_dir.empty())
+        if (!settings.diff_dir.empty()) {
             browser::check_may_write(settings.diff_dir, browser::WriteTarget::folder, inputs);
+            if (has_manifest(settings.diff_dir) && !is_our_manifest(settings.diff_dir)) {
+                throw browser::OutputRefused("its " + std::string(browser::kManifest) +
+                                             " is another program's (a run's --out folder, whose pictures are "
+                                             "the run's); name a folder of its own for the diff pictures");
+            }
+        }
     } catch (const browser::OutputRefused& refused) {
         const fs::path& named = settings.diff_file.empty() ? settings.diff_dir : settings.diff_file;
         std::cerr << kProgram << ": cannot write " << browser::in_quotes(named.string()) << ": " << refused.what()
@@ -236,6 +290,12 @@ int main(int argc, char** argv) {
         }
     }
 
-    if (folders) return compare_folders(settings);
-    return compare_pair(settings.expected.filename().string(), settings.expected, settings.actual, settings);
+    // Ctrl-C or SIGTERM lets the picture being written finish (or removes its partial
+    // file) and ends the program by that signal, with no half-written file behind.
+    browser::note_interruptions();
+    const int status =
+        folders ? compare_folders(settings)
+                : compare_pair(settings.expected.filename().string(), settings.expected, settings.actual, settings);
+    browser::stop_if_interrupted();
+    return status;
 }

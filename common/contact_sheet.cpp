@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "page.h"  // draw_text
+#include "text.h"  // draw_text
 
 namespace browser {
 namespace {

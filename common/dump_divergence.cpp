@@ -1,14 +1,15 @@
 #include "dump_divergence.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "message_text.h"
-#include "state_dump.h"
+#include "png_io.h"      // FileError
+#include "state_dump.h"  // is_plain_word
 
 namespace browser {
 
@@ -35,19 +36,21 @@ std::optional<Number> read_number(std::string_view text) {
 }
 
 // A dump's rows grouped by step: steps[k] holds step k's rows, in index order.
-using Steps = std::vector<std::vector<const DumpRow*>>;
-
-Steps by_step(const std::vector<DumpRow>& rows) {
-    Steps steps;
+std::vector<std::vector<DumpRow>> by_step(const std::vector<DumpRow>& rows) {
+    std::vector<std::vector<DumpRow>> steps;
     for (const DumpRow& row : rows) {
         if (static_cast<std::size_t>(row.step) == steps.size()) steps.emplace_back();
-        steps.back().push_back(&row);
+        steps.back().push_back(row);
     }
     return steps;
 }
 
+// nan is the same as nan (both runs blew up alike), an infinity the same as itself (the
+// book's code overflowed alike, tools/book_runner writes inf); neither is the same as
+// any number, however large the tolerance.
 bool same_number(double a, double b, DumpTolerance tolerance) {
     if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+    if (std::isinf(a) || std::isinf(b)) return a == b;
     return agree(a, b, tolerance);
 }
 
@@ -61,49 +64,6 @@ std::optional<std::string_view> first_differing_field(const DumpRow& a, const Du
 std::size_t field_index(std::string_view field) {
     return static_cast<std::size_t>(std::find(kDumpFields.begin(), kDumpFields.end(), field) - kDumpFields.begin());
 }
-
-// Book projects as one number: "4.4" is 44. Nothing for a text of another form.
-std::optional<int> stage_number(std::string_view stage) {
-    if (stage.size() != 3 || stage[1] != '.') return std::nullopt;
-    const auto chapter = read_number<int>(stage.substr(0, 1));
-    const auto project = read_number<int>(stage.substr(2, 1));
-    if (!chapter || !project) return std::nullopt;
-    return *chapter * 10 + *project;
-}
-
-bool a_body_left(const Divergence& d) {
-    return d.kind == DivergenceKind::extra_body || d.bodies_a < d.bodies_before_a || d.bodies_b < d.bodies_before_b;
-}
-
-// What the dumps can show of each errata entry, from the stage that has it on: the
-// numbers of a circle (its inertia), a body gone from the list (the book's removal
-// during the update loop), or a run that stops updating (the book's frozen page).
-struct Entry {
-    int from_stage;
-    KnownDifference difference;
-    bool (*fits)(const Divergence&);
-};
-
-const Entry kEntries[] = {
-    {51,
-     {"The selection survives the removal of the selected shape (fixed, 5.1)",
-      "one run stops updating while the other goes on: the book's page freezes once the selected shape "
-      "has left the canvas"},
-     [](const Divergence& d) { return d.kind == DivergenceKind::steps_end; }},
-    {51,
-     {"Out-of-bounds removal no longer skips the next shape's step (5.1)",
-      "a shape left the canvas in this step: in the book's run the shape after it misses this update"},
-     a_body_left},
-    {44,
-     {"Circle inertia (fixed, 4.1 on)",
-      "a circle's numbers differ: the book's circle keeps m r^2 / 12 where its inverse inertia belongs, "
-      "which the angular impulse of 4.4 on uses"},
-     [](const Divergence& d) {
-         return d.kind == DivergenceKind::value &&
-                std::any_of(d.differing.begin(), d.differing.end(),
-                            [](const DifferingBody& body) { return body.shape == "circle"; });
-     }},
-};
 
 std::string number_text(double value) {
     std::ostringstream text;
@@ -146,147 +106,216 @@ std::string what_differs(const Divergence& d, std::string_view name_a, std::stri
 
 }  // namespace
 
-std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name) {
-    std::vector<DumpRow> rows;
-    std::string line;
-    long line_number = 1;
-    auto refuse = [&](const std::string& problem) -> DumpError {
-        return DumpError(printable(name) + ":" + std::to_string(line_number) + ": " + problem);
+DumpReader::DumpReader(std::function<bool(std::string&)> next_line, std::string_view name)
+    : next_line_(std::move(next_line)), name_(name) {
+    std::string header;
+    if (!next_line_(header)) throw refuse("not a state dump: it is empty");
+    // The columns by name: the ones compared must be there, and a body's id may be
+    // (state_dump.h); others may come anywhere, and are read past.
+    const std::vector<std::string_view> names = split_commas(header);
+    columns_ = names.size();
+    const auto find = [&](std::string_view wanted) -> std::optional<std::size_t> {
+        for (std::size_t c = 0; c < names.size(); ++c) {
+            if (names[c] == wanted) return c;
+        }
+        return std::nullopt;
     };
-    const bool got_line = static_cast<bool>(std::getline(in, line));
-    if (!got_line || (line != kDumpHeader && line != kDumpHeaderWithIds)) {
-        throw refuse("not a state dump: the first line must be \"" + std::string(kDumpHeader) + "\" (or, with ids, \"" +
-                     std::string(kDumpHeaderWithIds) + "\")");
+    const auto step = find("step"), index = find("index"), shape = find("shape");
+    bool whole = step && index && shape;
+    for (std::size_t f = 0; f < kDumpFields.size() && whole; ++f) {
+        const auto at = find(kDumpFields[f]);
+        whole = at.has_value();
+        if (at) field_at_[f] = *at;
     }
-    // With ids, each row has one more field, after the index.
-    const std::size_t id_fields = line == kDumpHeaderWithIds ? 1 : 0;
-    const std::size_t fields = 3 + id_fields + kDumpFields.size();
-    while (std::getline(in, line)) {
-        ++line_number;
-        const std::vector<std::string_view> parts = split_commas(line);
-        if (parts.size() != fields) {
-            throw refuse("a row has " + std::to_string(fields) + " fields, this has " + std::to_string(parts.size()));
-        }
-        DumpRow row;
-        const auto step = read_number<long>(parts[0]);
-        const auto index = read_number<std::size_t>(parts[1]);
-        if (!step || !index) throw refuse("step and index must be whole numbers");
-        row.step = *step;
-        row.index = *index;
-        if (id_fields == 1) {
-            row.id = read_number<std::uint64_t>(parts[2]);
-            if (!row.id) throw refuse("the id must be a whole number");
-        }
-        row.shape = parts[2 + id_fields];
-        if (row.shape != "rectangle" && row.shape != "circle") throw refuse("the shape must be rectangle or circle");
-        for (std::size_t f = 0; f < kDumpFields.size(); ++f) {
-            const auto value = read_number<double>(parts[3 + id_fields + f]);
-            if (!value) throw refuse(std::string(kDumpFields[f]) + " is not a number");
-            row.values[f] = *value;
-        }
-        const bool next_body = !rows.empty() && row.step == rows.back().step && row.index == rows.back().index + 1;
-        const bool next_step = row.index == 0 && row.step == (rows.empty() ? 0 : rows.back().step + 1);
-        if (!next_body && !next_step) {
-            throw refuse("rows must go step by step from step 0, each step's bodies numbered from 0");
-        }
-        rows.push_back(std::move(row));
+    if (!whole) {
+        throw refuse("not a state dump: the first line must name the columns \"" + std::string(kDumpHeader) + "\"");
     }
+    step_at_ = *step;
+    index_at_ = *index;
+    shape_at_ = *shape;
+    id_at_ = find("id");
+}
+
+DumpError DumpReader::refuse(const std::string& problem) const {
+    return DumpError(printable(name_) + ":" + std::to_string(line_number_) + ": " + problem);
+}
+
+std::optional<DumpRow> DumpReader::read_row() {
+    std::string line;
+    if (!next_line_(line)) return std::nullopt;
+    ++line_number_;
+    const std::vector<std::string_view> parts = split_commas(line);
+    if (parts.size() != columns_) {
+        throw refuse("a row has " + std::to_string(columns_) + " fields, this has " + std::to_string(parts.size()));
+    }
+    DumpRow row;
+    const auto step = read_number<long>(parts[step_at_]);
+    const auto index = read_number<std::size_t>(parts[index_at_]);
+    if (!step || !index) throw refuse("step and index must be whole numbers");
+    row.step = *step;
+    row.index = *index;
+    if (id_at_) {
+        row.id = read_number<std::uint64_t>(parts[*id_at_]);
+        if (!row.id) throw refuse("the id must be a whole number");
+    }
+    row.shape = parts[shape_at_];
+    if (!is_plain_word(row.shape)) throw refuse("the shape must be a plain word (lower-case letters, digits, _)");
+    for (std::size_t f = 0; f < kDumpFields.size(); ++f) {
+        const auto value = read_number<double>(parts[field_at_[f]]);
+        if (!value) throw refuse(std::string(kDumpFields[f]) + " is not a number");
+        row.values[f] = *value;
+    }
+    const bool next_body = last_ && row.step == last_->step && row.index == last_->index + 1;
+    const bool next_step = row.index == 0 && row.step == (last_ ? last_->step + 1 : 0);
+    if (!next_body && !next_step)
+        throw refuse("rows must go step by step from step 0, each step's bodies numbered from 0");
+    last_ = Last{row.step, row.index};
+    return row;
+}
+
+bool DumpReader::next_step(std::vector<DumpRow>& rows) {
+    rows.clear();
+    if (!ahead_) ahead_ = read_row();
+    if (!ahead_) return false;
+    const long step = ahead_->step;
+    while (ahead_ && ahead_->step == step) {
+        if (rows.size() == kMostRowsInStep) {
+            throw refuse("more than " + std::to_string(kMostRowsInStep) + " bodies in one step, more than any run has");
+        }
+        rows.push_back(std::move(*ahead_));
+        ahead_ = read_row();
+    }
+    return true;
+}
+
+std::vector<DumpRow> parse_dump(std::istream& in, std::string_view name) {
+    DumpReader reader([&in](std::string& line) { return static_cast<bool>(std::getline(in, line)); }, name);
+    std::vector<DumpRow> rows, step;
+    while (reader.next_step(step)) rows.insert(rows.end(), step.begin(), step.end());
     return rows;
 }
 
 std::vector<DumpRow> read_dump(const std::filesystem::path& file) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) {
-        throw DumpError(printable(file.string()) + ": not a regular file that can be read");
+    std::vector<DumpRow> rows, step;
+    DumpFile dump(file);
+    while (dump.reader.next_step(step)) rows.insert(rows.end(), step.begin(), step.end());
+    return rows;
+}
+
+DumpFile::DumpFile(const std::filesystem::path& file)
+    : lines(open(file)),
+      reader(
+          [this](std::string& line) {
+              try {
+                  return lines->next(line);
+              } catch (const FileError& error) {
+                  throw DumpError(error.what());  // a line too long, a read that failed
+              }
+          },
+          file.string()) {}
+
+std::unique_ptr<LineReader> DumpFile::open(const std::filesystem::path& file) {
+    try {
+        return std::make_unique<LineReader>(file, kLongestDumpLine);
+    } catch (const FileError& error) {
+        throw DumpError(error.what());
     }
-    std::ifstream in(file);
-    if (!in) throw DumpError(printable(file.string()) + ": cannot be read");
-    return parse_dump(in, file.string());
 }
 
 bool agree(double a, double b, DumpTolerance tolerance) {
     return std::abs(a - b) <= tolerance.absolute + tolerance.relative * std::max(std::abs(a), std::abs(b));
 }
 
+namespace {
+
+// One step of each dump: its rows, or nothing when that dump has no more steps; and how
+// many bodies each had at the step before.
+struct StepOf {
+    const std::vector<DumpRow>* rows;
+    std::size_t bodies_before;
+};
+
+std::optional<Divergence> divergence_at(long step, StepOf a, StepOf b, DumpTolerance tolerance) {
+    Divergence d;
+    d.step = step;
+    d.bodies_a = a.rows ? a.rows->size() : 0;
+    d.bodies_b = b.rows ? b.rows->size() : 0;
+    d.bodies_before_a = a.bodies_before;
+    d.bodies_before_b = b.bodies_before;
+    if (!a.rows || !b.rows) {
+        d.kind = DivergenceKind::steps_end;
+        d.a_is_longer = a.rows != nullptr;
+        return d;
+    }
+    std::optional<Divergence> first;
+    for (std::size_t i = 0; i < std::min(d.bodies_a, d.bodies_b); ++i) {
+        const DumpRow& row_a = (*a.rows)[i];
+        const DumpRow& row_b = (*b.rows)[i];
+        const auto field = first_differing_field(row_a, row_b, tolerance);
+        if (row_a.shape == row_b.shape && !field) continue;
+        d.differing.push_back({i, row_a.shape, field.value_or("shape")});
+        if (first) continue;
+        first = d;
+        first->index = i;
+        first->shape = row_a.shape;
+        if (row_a.shape != row_b.shape) {
+            first->kind = DivergenceKind::shape;
+        } else {
+            first->kind = DivergenceKind::value;
+            first->field = *field;
+            first->a = row_a.values[field_index(*field)];
+            first->b = row_b.values[field_index(*field)];
+        }
+    }
+    if (first) {
+        first->differing = d.differing;
+        return first;
+    }
+    if (d.bodies_a != d.bodies_b) {
+        d.kind = DivergenceKind::extra_body;
+        d.index = std::min(d.bodies_a, d.bodies_b);
+        d.a_is_longer = d.bodies_a > d.bodies_b;
+        d.shape = (d.a_is_longer ? *a.rows : *b.rows)[d.index].shape;
+        return d;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<Divergence> first_divergence(const std::vector<DumpRow>& a, const std::vector<DumpRow>& b,
                                            DumpTolerance tolerance) {
-    const Steps steps_a = by_step(a), steps_b = by_step(b);
+    const auto steps_a = by_step(a), steps_b = by_step(b);
+    const auto step_of = [](const std::vector<std::vector<DumpRow>>& steps, std::size_t step) {
+        return StepOf{step < steps.size() ? &steps[step] : nullptr,
+                      step > 0 && step - 1 < steps.size() ? steps[step - 1].size() : 0};
+    };
     for (std::size_t step = 0; step < std::max(steps_a.size(), steps_b.size()); ++step) {
-        Divergence d;
-        d.step = static_cast<long>(step);
-        d.bodies_a = step < steps_a.size() ? steps_a[step].size() : 0;
-        d.bodies_b = step < steps_b.size() ? steps_b[step].size() : 0;
-        d.bodies_before_a = step > 0 && step - 1 < steps_a.size() ? steps_a[step - 1].size() : 0;
-        d.bodies_before_b = step > 0 && step - 1 < steps_b.size() ? steps_b[step - 1].size() : 0;
-        if (step >= steps_a.size() || step >= steps_b.size()) {
-            d.kind = DivergenceKind::steps_end;
-            d.a_is_longer = step < steps_a.size();
-            return d;
-        }
-        std::optional<Divergence> first;
-        for (std::size_t i = 0; i < std::min(d.bodies_a, d.bodies_b); ++i) {
-            const DumpRow& row_a = *steps_a[step][i];
-            const DumpRow& row_b = *steps_b[step][i];
-            const auto field = first_differing_field(row_a, row_b, tolerance);
-            if (row_a.shape == row_b.shape && !field) continue;
-            d.differing.push_back({i, row_a.shape, field.value_or("shape")});
-            if (first) continue;
-            first = d;
-            first->index = i;
-            first->shape = row_a.shape;
-            if (row_a.shape != row_b.shape) {
-                first->kind = DivergenceKind::shape;
-            } else {
-                first->kind = DivergenceKind::value;
-                first->field = *field;
-                first->a = row_a.values[field_index(*field)];
-                first->b = row_b.values[field_index(*field)];
-            }
-        }
-        if (first) {
-            first->differing = d.differing;
-            return first;
-        }
-        if (d.bodies_a != d.bodies_b) {
-            d.kind = DivergenceKind::extra_body;
-            d.index = std::min(d.bodies_a, d.bodies_b);
-            d.a_is_longer = d.bodies_a > d.bodies_b;
-            d.shape = (d.a_is_longer ? steps_a : steps_b)[step][d.index]->shape;
-            return d;
-        }
+        if (auto found =
+                divergence_at(static_cast<long>(step), step_of(steps_a, step), step_of(steps_b, step), tolerance))
+            return found;
     }
     return std::nullopt;
 }
 
-std::optional<KnownDifference> known_difference(const Divergence& divergence, std::string_view stage) {
-    const std::optional<int> number = stage_number(stage);
-    if (!number || divergence.step == 0) return std::nullopt;
-    for (const Entry& entry : kEntries) {
-        if (*number >= entry.from_stage && entry.fits(divergence)) return entry.difference;
+std::optional<Divergence> first_divergence(const std::filesystem::path& a, const std::filesystem::path& b,
+                                           DumpTolerance tolerance) {
+    DumpFile dump_a(a), dump_b(b);
+    std::vector<DumpRow> rows_a, rows_b;
+    std::size_t before_a = 0, before_b = 0;
+    for (long step = 0;; ++step) {
+        const bool has_a = dump_a.reader.next_step(rows_a), has_b = dump_b.reader.next_step(rows_b);
+        if (!has_a && !has_b) return std::nullopt;
+        if (auto found = divergence_at(step, {has_a ? &rows_a : nullptr, before_a},
+                                       {has_b ? &rows_b : nullptr, before_b}, tolerance))
+            return found;
+        before_a = rows_a.size();
+        before_b = rows_b.size();
     }
-    return std::nullopt;
-}
-
-std::vector<KnownDifference> known_differences() {
-    std::vector<KnownDifference> all;
-    for (const Entry& entry : kEntries) all.push_back(entry.difference);
-    return all;
-}
-
-std::string heading_anchor(std::string_view heading) {
-    std::string anchor;
-    for (const char c : heading) {
-        if (c == ' ') {
-            anchor += '-';
-        } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') {
-            anchor += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        }
-    }
-    return anchor;
 }
 
 std::string describe(const Divergence& divergence, std::string_view name_a, std::string_view name_b,
-                     DumpTolerance tolerance, std::string_view stage) {
+                     DumpTolerance tolerance) {
     std::string text = "first divergence: " + what_differs(divergence, name_a, name_b, tolerance) + "\n";
     if (divergence.differing.size() > 1) {
         text += "at that step these differ too:";
@@ -301,13 +330,7 @@ std::string describe(const Divergence& divergence, std::string_view name_a, std:
     if (divergence.step == 0) {
         return text + "the two runs did not start from the same world: build both from the same scene file\n";
     }
-    if (stage.empty()) return text + "(give --stage X.Y to look the difference up in docs/errata.md)\n";
-    if (const auto known = known_difference(divergence, stage)) {
-        return text + "known difference: docs/errata.md#" + heading_anchor(known->heading) + " (\"" +
-               std::string(known->heading) + "\"): " + std::string(known->sign) + "\n";
-    }
-    return text + "no entry of docs/errata.md explains this for " + std::string(stage) +
-           ": a difference to look into\n";
+    return text;
 }
 
 }  // namespace browser

@@ -115,16 +115,15 @@ private:
 };
 
 // The part of a picture that changed: columns [left, right), rows [top, bottom).
-struct Rectangle {
+struct Box {
     int left = 0, top = 0, right = 0, bottom = 0;
 };
 
-// The smallest rectangle holding every pixel where `now` differs from `before` (both
+// The smallest box holding every pixel where `now` differs from `before` (both
 // width x height palette indices); a single pixel when nothing changed, because every
 // GIF frame needs an image to carry its delay.
-Rectangle changed_part(const std::vector<GifPixelType>& before, const std::vector<GifPixelType>& now, int width,
-                       int height) {
-    Rectangle changed{width, height, 0, 0};
+Box changed_part(const std::vector<GifPixelType>& before, const std::vector<GifPixelType>& now, int width, int height) {
+    Box changed{width, height, 0, 0};
     for (int y = 0; y < height; ++y) {
         const auto row_before = before.begin() + static_cast<std::ptrdiff_t>(y) * width;
         const auto row_now = now.begin() + static_cast<std::ptrdiff_t>(y) * width;
@@ -219,10 +218,10 @@ struct GifWriter::Encoder {
             const std::uint8_t* p = &picture.rgba[4 * i];
             current[i] = quantizer.index_of({p[0], p[1], p[2], p[3]});
         }
-        const Rectangle part = first ? Rectangle{0, 0, width, height} : changed_part(previous, current, width, height);
+        const Box part = first ? Box{0, 0, width, height} : changed_part(previous, current, width, height);
 
         // "Do not dispose": the next frame is drawn over this one, so the pixels outside
-        // its rectangle keep showing this frame.
+        // its box keep showing this frame.
         GraphicsControlBlock timing{};
         timing.DisposalMode = DISPOSE_DO_NOT;
         timing.UserInputFlag = false;

@@ -25,7 +25,7 @@ int gif_delay_centiseconds(double frame_ms, int frames_per_picture);
 
 // Writes one GIF that loops forever, picture by picture. Every picture must have the
 // size given at construction and is shown for delay_cs centiseconds. After the first,
-// a picture is stored as the smallest rectangle that differs from the one before, so
+// a picture is stored as the smallest box that differs from the one before, so
 // a still background costs almost nothing. Errors throw FileError with a one-line
 // message; a writer destroyed without close() leaves an unfinished file behind (the
 // browser writes into a staging folder that it discards on failure).

@@ -16,7 +16,7 @@ Image::Image(int w, int h, Color fill) : width(std::max(w, 0)), height(std::max(
 }
 
 void Image::paste(const Image& source, int x, int y) {
-    // Only the rectangle where the two pictures overlap is copied, one row at a time.
+    // Only the part where the two pictures overlap is copied, one row at a time.
     const int first_column = std::max(0, -x);
     const int last_column = std::min(source.width, width - x);  // one past the end
     const int first_row = std::max(0, -y);

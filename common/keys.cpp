@@ -106,7 +106,7 @@ KeyScript KeyScript::parse(std::string_view script) {
         if (!key) reject(token, "unknown key " + in_quotes(rest));
         if (count > kMaxPresses - presses) {
             throw KeyScriptError("the script presses more than " + std::to_string(kMaxPresses) +
-                                 " keys in all (each press may add a shape that every later step works on)");
+                                 " keys in all (each press may add an object that every later step works on)");
         }
         presses += count;
 

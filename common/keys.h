@@ -66,8 +66,8 @@ public:
     // Limits that keep a typo ("f*1000000000") from making a run allocate or loop for ages.
     static constexpr int kMaxCount = 2'000;
     static constexpr int kMaxFrame = 10'000'000;
-    // In all, over every token: each press may add a shape (F, G), and every step works
-    // on every pair of shapes.
+    // In all, over every token: a press may add an object to the page's world, and every
+    // later step may work on every pair of objects.
     static constexpr int kMaxPresses = 2'000;
 
     KeyScript() = default;

@@ -190,7 +190,7 @@ private:
 
     // "frame 41 (0.68 s)   F12: save page   Space: pause   Esc: end", or while paused
     // "paused after frame 41 (0.68 s)   waiting: f g   F12: save page   period: one frame
-    // Space: go on   Esc: end", with "F12: saved s4_4_frame_0041.png" for a while after F12.
+    // Space: go on   Esc: end", with "F12: saved <id>_frame_0041.png" for a while after F12.
     std::string status() const {
         const int shown = frames_run_ - 1;
         const double seconds = frames_run_ * options_.frame_ms / 1000.0;

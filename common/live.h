@@ -3,7 +3,7 @@
 // stage's keys from the keyboard.
 //
 // A live session is the same computation as a replay. The book's loop asks the real
-// clock how much time has passed and runs as many fixed updates as fit (2.2's frame
+// clock how much time has passed and runs as many fixed updates as fit (the book's frame
 // skipping); here every frame shown moves the simulated clock on by exactly frame_ms,
 // however long it really took, so a session and the replay of its key script run the
 // same frames, the same updates and the same presses before the same frames. The window

@@ -18,16 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The names a folder's manifest lists; none when it has no manifest.
-std::set<std::string> manifest_names(const fs::path& folder) {
-    std::set<std::string> names;
-    std::ifstream in(folder / kManifest);
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.front() != '#') names.insert(line);
-    }
-    return names;
-}
-
 // A plain file with one name: what a run writes. A link, a subfolder or a second name
 // of someone's file is not, even under a listed name.
 bool is_plain_file(const fs::path& path) {
@@ -44,13 +34,37 @@ std::vector<std::string> sorted_names(const fs::path& folder) {
     return names;
 }
 
+// A folder in a run's folder (compare_runs' left/ and right/, each a run of the stage
+// program) is the run's when its manifest lists it and it is a run's folder in turn; so
+// deep and no deeper.
+constexpr int kDeepestWrittenFolder = 4;
+
+// A folder (not a link to one) that holds a run's manifest.
+bool is_run_folder(const fs::path& path) {
+    struct stat status {};
+    return ::lstat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode) && is_plain_file(path / kManifest);
+}
+
+// The first thing in `folder` that no run wrote, as a path inside it; "" when none.
+std::string first_unwritten(const fs::path& folder, int depth) {
+    const std::set<std::string> written = manifest_names(folder);
+    for (const std::string& name : sorted_names(folder)) {
+        const bool listed = name == kManifest || written.contains(name);
+        if (listed && is_plain_file(folder / name)) continue;
+        if (listed && name != kManifest && depth < kDeepestWrittenFolder && is_run_folder(folder / name)) {
+            const std::string inner = first_unwritten(folder / name, depth + 1);
+            if (inner.empty()) continue;
+            return (fs::path(name) / inner).string();
+        }
+        return name;
+    }
+    return "";
+}
+
 void check_replaceable(const fs::path& out, std::span<const fs::path> inputs) {
     check_may_write(out, WriteTarget::folder, inputs);
     if (!fs::exists(fs::symlink_status(out))) return;
-    const std::set<std::string> written = manifest_names(out);
-    for (const std::string& name : sorted_names(out)) {
-        const bool listed = name == kManifest || written.contains(name);
-        if (listed && is_plain_file(out / name)) continue;
+    if (const std::string name = first_unwritten(out, 1); !name.empty()) {
         throw OutputRefused("it holds " + in_quotes(name) +
                             ", which no run wrote (a run replaces only a folder "
                             "holding what its " +
@@ -58,12 +72,14 @@ void check_replaceable(const fs::path& out, std::span<const fs::path> inputs) {
     }
 }
 
-// Removes what `folder`'s manifest lists, the manifest, and then the folder if that
-// leaves it empty; anything else in it stays.
-void remove_written(const fs::path& folder) {
+// Removes what `folder`'s manifest lists (a listed folder the same way), the manifest,
+// and then the folder if that leaves it empty; anything else in it stays.
+void remove_written(const fs::path& folder, int depth = 1) {
     std::error_code ignored;
     for (const std::string& name : manifest_names(folder)) {
         if (is_plain_file(folder / name)) fs::remove(folder / name, ignored);
+        else if (depth < kDeepestWrittenFolder && is_run_folder(folder / name))
+            remove_written(folder / name, depth + 1);
     }
     fs::remove(folder / kManifest, ignored);
     fs::remove(folder, ignored);  // only an empty folder goes
@@ -85,7 +101,22 @@ void write_manifest(const fs::path& folder) {
 // for "-" + std::to_string(...).
 }  // namespace
 
-// "out/s1_1/" and "out/s1_1" name the same folder; without the trailing separator
+// A manifest that is not a plain file (a FIFO would wait for ever) or is larger than any
+// run writes lists nothing: the folder then holds a file no run wrote.
+std::set<std::string> manifest_names(const fs::path& folder) {
+    std::set<std::string> names;
+    const fs::path manifest = folder / kManifest;
+    if (!is_plain_file(manifest)) return names;
+    std::error_code error;
+    if (fs::file_size(manifest, error) > kLargestManifest || error) return names;
+    std::ifstream in(manifest);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.front() != '#') names.insert(line);
+    }
+    return names;
+}
+
+// "out/x/" and "out/x" name the same folder; without the trailing separator
 // the staging folder would land inside it rather than beside it.
 fs::path OutputFolder::normalized(const fs::path& given) {
     fs::path path = given.lexically_normal();

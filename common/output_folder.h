@@ -18,7 +18,9 @@
 // by the next run into the same place, once its process is gone.
 
 #include <filesystem>
+#include <cstdint>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -36,6 +38,11 @@ inline constexpr const char* kContactSheet = "contact_sheet.png";
 inline constexpr const char* kAnimation = "animation.gif";
 inline constexpr const char* kUnfinishedAnimation = "animation.gif.partial";  // until its last frame is in
 
+// The names `folder`'s manifest lists: none when it has none, or one that is not a plain
+// file of at most kLargestManifest bytes.
+inline constexpr std::uintmax_t kLargestManifest = 16u << 20;
+std::set<std::string> manifest_names(const std::filesystem::path& folder);
+
 // The names a run gives the files of its folder (final.png, frame_NNNN.png,
 // contact_sheet.png, animation.gif and its partial file).
 bool is_picture_name(std::string_view name);
@@ -52,7 +59,7 @@ public:
 
     // Where the run writes its files until commit().
     const std::filesystem::path& staging() const { return staging_; }
-    // The folder as given, without a trailing separator ("out/s1_1/" is "out/s1_1").
+    // The folder as given, without a trailing separator ("out/x/" is "out/x").
     const std::filesystem::path& out() const { return out_; }
     static std::filesystem::path normalized(const std::filesystem::path& given);
 

@@ -1,12 +1,15 @@
 #include "overlay_draw.h"
 
-#include "page.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "text.h"
+
 namespace browser::overlay {
+
+using lib::Vec2;
+
 namespace {
 
 constexpr double kShortestArrow = 0.01;   // px
@@ -63,23 +66,23 @@ void marker(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
     if (!text.empty()) label(canvas, at + kLabelOffset, color, text);
 }
 
-void ring(Canvas& canvas, Vec2 center, double radius, Color color) {
+void ring(Canvas& canvas, Vec2 center, double r, Color color) {
     stroked(canvas, color, [&] {
-        canvas.moveTo(center.x + radius, center.y);
-        canvas.arc(center.x, center.y, radius, 0.0, 2.0 * std::numbers::pi);
+        canvas.moveTo(center.x + r, center.y);
+        canvas.arc(center.x, center.y, r, 0.0, 2.0 * std::numbers::pi);
     });
 }
 
-void turn_arrow(Canvas& canvas, Vec2 center, double radius, double start, double sweep, Color color) {
-    if (!(std::abs(sweep) >= kSmallestSweep) || !std::isfinite(sweep) || !(radius > 0.0)) return;
+void turn_arrow(Canvas& canvas, Vec2 center, double r, double start, double sweep, Color color) {
+    if (!(std::abs(sweep) >= kSmallestSweep) || !std::isfinite(sweep) || !(r > 0.0)) return;
     const double end = start + sweep;
-    const Vec2 tip = center + Vec2(std::cos(end), std::sin(end)).scale(radius);
-    // Along the circle at the tip, in the direction of travel.
+    const Vec2 tip = center + Vec2(std::cos(end), std::sin(end)).scale(r);
+    // Along the ring at the tip, in the direction of travel.
     const Vec2 along = Vec2(-std::sin(end), std::cos(end)).scale(sweep > 0 ? 1.0 : -1.0);
     stroked(canvas, color, [&] {
-        canvas.moveTo(center.x + radius * std::cos(start), center.y + radius * std::sin(start));
-        canvas.arc(center.x, center.y, radius, start, end, sweep < 0);
-        head_strokes(canvas, tip, along, std::min(kHeadLength, 0.4 * radius * std::abs(sweep)));
+        canvas.moveTo(center.x + r * std::cos(start), center.y + r * std::sin(start));
+        canvas.arc(center.x, center.y, r, start, end, sweep < 0);
+        head_strokes(canvas, tip, along, std::min(kHeadLength, 0.4 * r * std::abs(sweep)));
     });
 }
 

@@ -19,37 +19,37 @@ inline constexpr double kHeadLength = 7.0;  // px
 inline constexpr double kHeadAngle = 0.45;  // rad, about 26 degrees
 
 // How far a marker's cross reaches each way from its point, and where its label goes.
-inline constexpr double kMarkerReach = 3.0;      // px
-inline constexpr Vec2 kLabelOffset{5.0, -16.0};  // px, from the point to the label's top-left
+inline constexpr double kMarkerReach = 3.0;           // px
+inline constexpr lib::Vec2 kLabelOffset{5.0, -16.0};  // px, from the point to the label's top-left
 
 // A straight line from `from` to `to` (a pair, a lever arm).
-void line(Canvas& canvas, Vec2 from, Vec2 to, Color color);
+void line(Canvas& canvas, lib::Vec2 from, lib::Vec2 to, Color color);
 
 // A straight arrow from `tail` to `head`. An arrow shorter than a hundredth of a pixel
 // has no direction and draws nothing.
-void arrow(Canvas& canvas, Vec2 tail, Vec2 head, Color color);
+void arrow(Canvas& canvas, lib::Vec2 tail, lib::Vec2 head, Color color);
 
 // A cross at `at`, with `label` (one line; "" for none) just above to its right.
-void marker(Canvas& canvas, Vec2 at, Color color, std::string_view label = {});
+void marker(Canvas& canvas, lib::Vec2 at, Color color, std::string_view label = {});
 
-// A circle of `radius` around `center` (a bounding circle, a reach).
-void ring(Canvas& canvas, Vec2 center, double radius, Color color);
+// A ring `r` px around `center` (a bound, a reach).
+void ring(Canvas& canvas, lib::Vec2 center, double r, Color color);
 
-// A curved arrow along the circle of `radius` around `center`, from the angle `start`
+// A curved arrow along the ring `r` px around `center`, from the angle `start`
 // turning by `sweep` (rad; positive turns clockwise on screen, as angles do in canvas
 // coordinates), its head at the end: a spin, or a turn one impulse gives. A sweep under
 // a thousandth of a radian draws nothing.
-void turn_arrow(Canvas& canvas, Vec2 center, double radius, double start, double sweep, Color color);
+void turn_arrow(Canvas& canvas, lib::Vec2 center, double r, double start, double sweep, Color color);
 
 // A label with its top-left corner at `at`.
-void label(Canvas& canvas, Vec2 at, Color color, std::string_view text);
+void label(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);
 
 // Labels that must stay readable where what they label crowds together (a pile of
 // shapes): each goes where it is asked to, or as many lines lower as it takes to clear
 // the labels placed before it. One layout a frame.
 class LabelLayout {
 public:
-    void place(Canvas& canvas, Vec2 at, Color color, std::string_view text);
+    void place(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);
 
 private:
     struct Box {

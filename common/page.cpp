@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <stb_easy_font.h>
+#include "text.h"
 
 namespace browser {
 
@@ -16,30 +15,12 @@ namespace {
 constexpr Color kFrameColor = colors::kGray;  // the thin border round the canvas
 constexpr Color kTextColor = colors::kBlack;
 
-// stb_easy_font draws on a grid of font units: letters about 7 units tall. Two pixels a
-// unit makes text about the size of a browser's default font, and a whole number of
-// pixels a unit keeps every stroke of every letter on whole pixels. Lines 9 units apart
-// (the font's own spacing is 12) let the longest echo of chapter 4, some 24 lines, fit.
-constexpr int kTextScale = 2;
-constexpr int kLineHeight = 9 * kTextScale;
-constexpr float kLetterSpacing = -1.0f;  // font units: tighter than the default, still clear;
-                                         // a panel line then holds about 38 letters
+constexpr int kLineHeight = text_line_height();  // the panel's lines are the font's
 constexpr int kPanelMargin = 10;
 // The live window's status line: a light gray band, so it reads as the window's and
 // not the page's.
 constexpr int kStatusPadding = 6;
 constexpr Color kStatusBackground{224, 224, 224, 255};
-
-// The font knows printable ASCII only; anything else would index past its tables.
-std::string printable(std::string_view line) {
-    std::string text;
-    for (char c : line) {
-        if (c == '\t') text += "    ";
-        else if (c >= ' ' && c <= '~') text += c;
-        else if (c != '\r') text += '?';
-    }
-    return text;
-}
 
 // Splits one line of text into pieces at most max_width pixels wide, breaking after the
 // last space that fits, or inside a word too long to fit at all. Continued pieces are
@@ -92,7 +73,7 @@ std::vector<std::string> beyond_lines(const Document& document) {
     std::string_view text = document.beyond_echo;
     while (!text.empty()) {
         const std::size_t end = text.find('\n');
-        for (std::string& piece : wrap(printable(text.substr(0, end)), kPanelWidth - 2 * kPanelMargin)) {
+        for (std::string& piece : wrap(font_text(text.substr(0, end)), kPanelWidth - 2 * kPanelMargin)) {
             lines.push_back(std::move(piece));
         }
         text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
@@ -106,41 +87,6 @@ int band_height(const std::vector<std::string>& lines) {
 }
 
 }  // namespace
-
-int text_width(std::string_view line) {
-    std::string text = printable(line);  // a copy: the font's functions take a mutable char*
-    stb_easy_font_spacing(kLetterSpacing);
-    return stb_easy_font_width(text.data()) * kTextScale;
-}
-
-int text_line_height() { return kLineHeight; }
-
-// The font hands back quads (four corners each, x y z floats then 4 colour bytes);
-// with kTextScale whole, every quad covers whole pixels, so each is a plain rectangle
-// fill.
-void draw_text(Image& picture, std::string_view line, int x, int y, Color color, int scale) {
-    std::string text = printable(line);  // also a mutable copy, which the font's functions take
-    constexpr std::size_t kVertexBytes = 16, kQuadBytes = 4 * kVertexBytes;
-    constexpr std::size_t kMostQuadsPerLetter = 16;
-    std::vector<char> quads((text.size() + 1) * kMostQuadsPerLetter * kQuadBytes);
-    stb_easy_font_spacing(kLetterSpacing);
-    const int count =
-        stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(), static_cast<int>(quads.size()));
-    for (int q = 0; q < count; ++q) {
-        float top_left[2], bottom_right[2];  // corners 0 and 2 of the quad
-        const char* quad = quads.data() + static_cast<std::size_t>(q) * kQuadBytes;
-        std::memcpy(top_left, quad, sizeof top_left);
-        std::memcpy(bottom_right, quad + 2 * kVertexBytes, sizeof bottom_right);
-        const int units = kTextScale * scale;  // device pixels a font unit
-        const int x0 = x + static_cast<int>(top_left[0] * units);
-        const int y0 = y + static_cast<int>(top_left[1] * units);
-        const int x1 = x + static_cast<int>(bottom_right[0] * units);
-        const int y1 = y + static_cast<int>(bottom_right[1] * units);
-        for (int j = y0; j < y1; ++j) {
-            for (int i = x0; i < x1; ++i) picture.set(i, j, color);
-        }
-    }
-}
 
 Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
@@ -175,7 +121,7 @@ Image render_page(const Document& document) {
     std::string_view echo = document.ui_echo;
     while (!echo.empty() && y + kLineHeight <= text_bottom) {
         const std::size_t end = echo.find('\n');
-        const std::string line = printable(echo.substr(0, end));
+        const std::string line = font_text(echo.substr(0, end));
         echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
         for (const std::string& piece : wrap(line, text_width_limit)) {
             draw_text(page, piece, text_left * scale, y * scale, kTextColor, scale);
@@ -213,7 +159,7 @@ void draw_legend(Image& page, const Document& document) {
         fill(page, (left + kPanelMargin / 2) * k, swatch_top * k, (left + kPanelMargin / 2 + kSwatchSize) * k,
              (swatch_top + kSwatchSize) * k, entry.color);
         const int text_left = left + kPanelMargin / 2 + kSwatchSize + kSwatchGap;
-        draw_text(page, printable(entry.text), text_left * k, y * k, kTextColor, k);
+        draw_text(page, entry.text, text_left * k, y * k, kTextColor, k);
         y += kLineHeight;
     }
 }

@@ -41,17 +41,6 @@ inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
 // too, and the text is wrapped where it is wrapped at scale 1.
 Image render_page(const Document& document);
 
-// Writes one line of text in the page's font and size (letters about 14 pixels tall,
-// times `scale`) with its top-left corner at (x, y); what falls outside `picture` is
-// cut off. The font has printable ASCII only: a tab becomes four spaces, a carriage
-// return nothing, any other character a '?'.
-void draw_text(Image& picture, std::string_view text, int x, int y, Color color, int scale = 1);
-
-// How wide draw_text writes `line` at scale 1, and how far apart the panel's lines are,
-// in pixels.
-int text_width(std::string_view line);
-int text_line_height();
-
 // The page with one line of text under it, on a gray band the page's width: what a
 // live window shows (live.h), so the page above the band is the picture a run saves.
 Image with_status_line(const Image& page, std::string_view status, int scale);

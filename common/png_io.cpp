@@ -12,9 +12,13 @@
 #include <system_error>
 #include <vector>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "interruption.h"
 #include "message_text.h"
 
 namespace browser {
@@ -61,10 +65,22 @@ void write_png(const fs::path& path, const Image& image) {
     }
 
     // Written beside the final name and renamed into place: a rename within one folder
-    // replaces the old file at once, so nobody ever reads half a picture.
-    const fs::path temporary = fs::path(path).concat(".tmp");
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) fail(kDoing, path, std::strerror(errno));
+    // replaces the old file at once, so nobody ever reads half a picture. The partial
+    // file's name is this process's own and is made new (O_EXCL, O_NOFOLLOW): a file or a
+    // link already there under that name is never written through. An interruption
+    // removes it (interruption.h).
+    fs::path temporary = path;
+    temporary += ".partial" + process_suffix();
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0) fail(kDoing, path, std::strerror(errno));
+    const Leftover leftover(temporary);
+    std::FILE* file = ::fdopen(fd, "wb");
+    if (!file) {
+        const int reason = errno;
+        ::close(fd);
+        fs::remove(temporary, error);
+        fail(kDoing, path, std::strerror(reason));
+    }
     const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     const int write_errno = errno;
     const bool closed = std::fclose(file) == 0;

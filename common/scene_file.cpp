@@ -1,8 +1,8 @@
 #include "scene_file.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -27,10 +27,9 @@
 
 namespace browser {
 
+using lib::Vec2;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-
-std::string_view shape_name(ShapeKind shape) { return shape == ShapeKind::circle ? "circle" : "rectangle"; }
 
 namespace {
 
@@ -39,7 +38,7 @@ namespace {
 // the file name in front, so no helper needs to carry it around.
 
 struct Refusal {
-    std::string where;  // a JSON path ("bodies[3].radius"), or "line 2, column 7"
+    std::string where;  // a JSON path ("springs[3].anchor"), or "line 2, column 7"
     std::string problem;
 };
 
@@ -64,8 +63,8 @@ std::string shown(const json& value) { return shortened(value.dump(-1, ' ', true
     refuse(std::move(where), std::move(text));
 }
 
-// JSON paths as a reader would write them: world.gravity[1], bodies[3].radius. A key
-// that is not a plain word is quoted (bodies[0]["my key"]), so that a strange key, even
+// JSON paths as a reader would write them: world.gravity[1], springs[3].anchor. A key
+// that is not a plain word is quoted (springs[0]["my key"]), so that a strange key, even
 // one holding a line break, cannot break the one-line message.
 constexpr std::size_t kLongestPlainKey = 40;
 
@@ -222,7 +221,7 @@ private:
     bool open(bool is_array) {
         if (open_.size() == kMaxNesting) {
             refusal = Refusal{path(), "nested deeper than a scene can use (" + std::to_string(kMaxNesting) +
-                                          " levels: {\"bodies\": [{\"center\": [x, y]}]})"};
+                                          " levels: {\"list\": [{\"key\": [x, y]}]})"};
             return false;
         }
         open_.push_back(Container{.is_array = is_array});
@@ -271,15 +270,15 @@ bool flag(const json& value, const std::string& path) {
     return value.get<bool>();
 }
 
+std::string choices(std::span<const std::string_view> words);
+
 // A word from a fixed list; its place in the list.
 std::size_t word(const json& value, const std::string& path, std::span<const std::string_view> spellings) {
-    std::string choices = "must be ";
     for (std::size_t i = 0; i < spellings.size(); ++i) {
         if (value.is_string() && value.get_ref<const std::string&>() == spellings[i]) return i;
-        if (i > 0) choices.append(i + 1 == spellings.size() ? " or " : ", ");
-        choices.append("\"").append(spellings[i]).append("\"");
     }
-    refuse_value(path, choices, value);
+    std::string problem = "must be ";
+    refuse_value(path, problem.append(choices(spellings)), value);
 }
 
 std::string comma_list(const std::vector<std::string>& words) {
@@ -304,24 +303,25 @@ void require_object(const json& value, const std::string& path) {
 }
 
 // ---------------------------------------------------------------------------------------
-// The world: the keys the stage reads. Each value is checked first and only stored once
-// the whole file has passed, so a refused file leaves every setting as it was.
+// Keys. A value is checked first and only stored once it has passed; a world's keys are
+// stored once the whole file has passed, so a refused file leaves every setting as it
+// was.
 
 using Assignment = std::function<void()>;
 
-Assignment read_world_key(const WorldKey& key, const json& value, const std::string& path) {
+Assignment read_key(const SceneKey& key, const json& value, const std::string& path) {
     return std::visit(
         [&](const auto& target) -> Assignment {
             using Target = std::decay_t<decltype(target)>;
-            if constexpr (std::is_same_v<Target, WorldKey::Number>) {
+            if constexpr (std::is_same_v<Target, SceneKey::Number>) {
                 return [setting = target.setting, v = number(value, path, target.rule)] { *setting = v; };
-            } else if constexpr (std::is_same_v<Target, WorldKey::Count>) {
+            } else if constexpr (std::is_same_v<Target, SceneKey::Count>) {
                 return [setting = target.setting, v = number(value, path, target.rule)] {
                     *setting = static_cast<int>(v);
                 };
-            } else if constexpr (std::is_same_v<Target, WorldKey::Flag>) {
+            } else if constexpr (std::is_same_v<Target, SceneKey::Flag>) {
                 return [setting = target.setting, v = flag(value, path)] { *setting = v; };
-            } else if constexpr (std::is_same_v<Target, WorldKey::Vector>) {
+            } else if constexpr (std::is_same_v<Target, SceneKey::Vector>) {
                 return [setting = target.setting, v = vector(value, path, target.rule)] { *setting = v; };
             } else {
                 return [choose = target.choose, i = word(value, path, target.spellings)] { choose(i); };
@@ -330,130 +330,122 @@ Assignment read_world_key(const WorldKey& key, const json& value, const std::str
         key.target());
 }
 
-std::vector<Assignment> read_world(const json& world, std::span<const WorldKey> keys) {
-    const std::string path = "world";
-    require_object(world, path);
-    std::vector<std::string> known;
-    for (const WorldKey& key : keys) known.emplace_back(key.name());
-    refuse_unknown_keys(world, path, known, "this stage's world");
+// The assignments of the keys `object` gives, in the order of `keys`. `owner` names the
+// object in a refusal ("this stage's world", "a hard spring"); `known` leads with the
+// keys read before these (an element's kind key).
+std::vector<Assignment> read_keys(const json& object, const std::string& path, std::span<const SceneKey> keys,
+                                  std::string_view owner, std::vector<std::string> known = {}) {
+    std::vector<std::string> required = known;
+    for (const SceneKey& key : keys) {
+        known.emplace_back(key.name());
+        if (key.required()) required.emplace_back(key.name());
+    }
+    refuse_unknown_keys(object, path, known, owner);
     std::vector<Assignment> assignments;
-    for (const WorldKey& key : keys) {
-        const auto found = world.find(std::string(key.name()));
-        if (found != world.end()) assignments.push_back(read_world_key(key, *found, member_path(path, found.key())));
+    for (const SceneKey& key : keys) {
+        const std::string key_path = member_path(path, std::string(key.name()));
+        const auto found = object.find(std::string(key.name()));
+        if (found != object.end()) {
+            assignments.push_back(read_key(key, *found, key_path));
+        } else if (key.required()) {
+            std::string problem = "missing; ";
+            refuse(key_path, problem.append(owner).append(" needs ").append(comma_list(required)));
+        }
     }
     return assignments;
 }
 
+std::vector<Assignment> read_world(const json& world, std::span<const SceneKey> keys) {
+    const std::string path = "world";
+    require_object(world, path);
+    return read_keys(world, path, keys, "this stage's world");
+}
+
 // ---------------------------------------------------------------------------------------
-// Bodies. A body's keys depend on its shape: a radius on a rectangle is as wrong as a
-// typo. Listed in the order messages show them: what the body is, where, how big, the rest.
+// Lists. An element's keys depend on its kind, so the kind is read first: a key of
+// another kind on it is as wrong as a typo.
 
-struct BodyKey {
-    const char* name;
-    std::variant<double BodyDescription::*, Vec2 BodyDescription::*> member;
-    NumberRule rule = rules::kFinite;
-    bool required = false;
-};
-
-constexpr bool kRequired = true;
-
-std::vector<BodyKey> body_keys(ShapeKind shape) {
-    using B = BodyDescription;
-    static const BodyKey kRectangleSizes[] = {{"width", &B::width, rules::kSize, kRequired},
-                                              {"height", &B::height, rules::kSize, kRequired}};
-    static const BodyKey kCircleSizes[] = {{"radius", &B::radius, rules::kSize, kRequired}};
-    static const BodyKey kAttributes[] = {{"mass", &B::mass, rules::kMass},
-                                          {"friction", &B::friction, rules::kFriction},
-                                          {"restitution", &B::restitution, rules::kFraction},
-                                          {"angle", &B::angle, rules::kAngle},
-                                          {"velocity", &B::velocity, rules::kSpeed},
-                                          {"angular_velocity", &B::angular_velocity, rules::kTurnRate}};
-    const std::span<const BodyKey> sizes = shape == ShapeKind::rectangle ? std::span<const BodyKey>(kRectangleSizes)
-                                                                         : std::span<const BodyKey>(kCircleSizes);
-    std::vector<BodyKey> keys{{"center", &B::center, rules::kPosition, kRequired}};
-    keys.reserve(1 + sizes.size() + std::size(kAttributes));
-    for (const BodyKey& key : sizes) keys.push_back(key);
-    for (const BodyKey& key : kAttributes) keys.push_back(key);
-    return keys;
+// "\"hard\" or \"soft\"": the words a kind key takes, as a refusal lists them.
+std::string choices(std::span<const std::string_view> words) {
+    std::string text;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (i > 0) text.append(i + 1 == words.size() ? " or " : ", ");
+        text.append("\"").append(words[i]).append("\"");
+    }
+    return text;
 }
 
-BodyDescription read_body(const json& object, const std::string& path, StageBodyKeys stage_keys) {
+void read_element(const json& object, const std::string& path, const SceneList& list) {
     require_object(object, path);
-    // The shape decides which keys the body may have, so it is read before the rest.
-    const std::string shape_path = member_path(path, "shape");
-    const auto shape = object.find("shape");
-    if (shape == object.end()) refuse(shape_path, R"(missing; every body needs "shape": "rectangle" or "circle")");
-    constexpr std::array<std::string_view, 2> kShapes{"rectangle", "circle"};
-    BodyDescription body;
-    body.shape = word(*shape, shape_path, kShapes) == 0 ? ShapeKind::rectangle : ShapeKind::circle;
-
-    const std::vector<BodyKey> keys = body_keys(body.shape);
-    std::vector<std::string> known{"shape"}, required{"shape"};
-    for (const BodyKey& key : keys) {
-        known.emplace_back(key.name);
-        if (key.required) required.emplace_back(key.name);
+    const std::string kind_key(list.kind_key);
+    const std::string kind_path = member_path(path, kind_key);
+    const auto kind = object.find(kind_key);
+    if (kind == object.end()) {
+        std::string problem = "missing; every ";
+        refuse(kind_path, problem.append(list.element)
+                              .append(" needs \"")
+                              .append(list.kind_key)
+                              .append("\": ")
+                              .append(choices(list.kinds)));
     }
-    if (stage_keys.bullet) known.emplace_back("bullet");
+    const std::size_t chosen = word(*kind, kind_path, list.kinds);
+    const std::vector<SceneKey> keys = list.add(chosen);
     std::string owner = "a ";
-    owner.append(shape_name(body.shape)).append(" body");
-    refuse_unknown_keys(object, path, known, owner);
-    for (const BodyKey& key : keys) {
-        const std::string key_path = member_path(path, key.name);
-        const auto found = object.find(key.name);
-        if (found == object.end()) {
-            if (!key.required) continue;
-            std::string problem = "missing; ";
-            refuse(key_path, problem.append(owner).append(" needs ").append(comma_list(required)));
-        }
-        std::visit(
-            [&](auto member) {
-                if constexpr (std::is_same_v<decltype(member), Vec2 BodyDescription::*>) {
-                    body.*member = vector(*found, key_path, key.rule);
-                } else {
-                    body.*member = number(*found, key_path, key.rule);
-                }
-            },
-            key.member);
-    }
-    if (const auto bullet = object.find("bullet"); stage_keys.bullet && bullet != object.end()) {
-        body.bullet = flag(*bullet, member_path(path, "bullet"));
-    }
-    return body;
+    owner.append(list.kinds[chosen]).append(" ").append(list.element);
+    for (const Assignment& assign : read_keys(object, path, keys, owner, {kind_key})) assign();
 }
 
-std::vector<BodyDescription> read_bodies(const json& list, const std::string& path, StageBodyKeys stage_keys) {
-    if (!list.is_array()) refuse_value(path, "must be an array [...] of bodies", list);
-    if (list.size() > kMaxBodies) {
-        refuse(path, "more than " + std::to_string(kMaxBodies) + " bodies (got " + std::to_string(list.size()) +
-                         "); every step tests every pair of them");
+void read_list(const json& elements, const std::string& path, const SceneList& list) {
+    if (!elements.is_array()) {
+        std::string problem = "must be an array [...] of ";
+        refuse_value(path, problem.append(list.name), elements);
     }
-    std::vector<BodyDescription> bodies;
-    for (std::size_t i = 0; i < list.size(); ++i)
-        bodies.push_back(read_body(list[i], element_path(path, i), stage_keys));
-    return bodies;
+    if (elements.size() > list.most) {
+        refuse(path, "more than " + std::to_string(list.most) + " " + std::string(list.name) + " (got " +
+                         std::to_string(elements.size()) + "); " + std::string(list.why_most));
+    }
+    for (std::size_t i = 0; i < elements.size(); ++i) read_element(elements[i], element_path(path, i), list);
 }
 
-std::vector<BodyDescription> read_scene(const json& root, std::span<const WorldKey> world_keys,
-                                        StageBodyKeys stage_keys) {
+void read_scene(const json& root, std::span<const SceneKey> world_keys, std::span<const SceneList> lists) {
     require_object(root, "");
-    refuse_unknown_keys(root, "", {"world", "bodies"}, "a scene");
+    std::vector<std::string> parts{"world"};
+    for (const SceneList& list : lists) parts.emplace_back(list.name);
+    refuse_unknown_keys(root, "", parts, "a scene");
     std::vector<Assignment> world;
     if (const auto found = root.find("world"); found != root.end()) world = read_world(*found, world_keys);
-    std::vector<BodyDescription> bodies;
-    if (const auto found = root.find("bodies"); found != root.end()) bodies = read_bodies(*found, "bodies", stage_keys);
+    for (const SceneList& list : lists) {
+        const std::string name(list.name);
+        if (const auto found = root.find(name); found != root.end()) read_list(*found, name, list);
+    }
     for (const Assignment& assign : world) assign();
-    return bodies;
+}
+
+// The shortest text that reads back to exactly `value`.
+std::string number_json(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+// The words of a rule without its "must be ".
+std::string values_of(const NumberRule& rule) {
+    std::string_view words = rule.words;
+    constexpr std::string_view kMustBe = "must be ";
+    if (words.starts_with(kMustBe)) words.remove_prefix(kMustBe.size());
+    return std::string(words);
 }
 
 }  // namespace
 
-std::vector<BodyDescription> load_scene(const fs::path& file, std::span<const WorldKey> world_keys,
-                                        StageBodyKeys stage_keys) {
-    return read_scene_text(read_text(file), file.string(), world_keys, stage_keys);
+std::string scene_text(const fs::path& file) { return read_text(file); }
+
+void load_scene(const fs::path& file, std::span<const SceneKey> world_keys, std::span<const SceneList> lists) {
+    read_scene_text(read_text(file), file.string(), world_keys, lists);
 }
 
-std::vector<BodyDescription> read_scene_text(const std::string& text, std::string_view source,
-                                             std::span<const WorldKey> world_keys, StageBodyKeys stage_keys) {
+void read_scene_text(const std::string& text, std::string_view source, std::span<const SceneKey> world_keys,
+                     std::span<const SceneList> lists) {
     try {
         if (text.size() > kMaxSceneBytes) {
             refuse("", "longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene may hold");
@@ -462,12 +454,40 @@ std::vector<BodyDescription> read_scene_text(const std::string& text, std::strin
         if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
             refuse(line_and_column(text, nul + 1), "a NUL byte, which a scene file never holds");
         }
-        return read_scene(parse(text), world_keys, stage_keys);
+        read_scene(parse(text), world_keys, lists);
     } catch (const Refusal& refusal) {
         std::string message = printable(source);
         message.append(": ").append(refusal.where.empty() ? "top level" : refusal.where);
         throw SceneError(message.append(": ").append(refusal.problem));
     }
+}
+
+KeyDescription describe(const SceneKey& key) {
+    KeyDescription description{.name = std::string(key.name()), .required = key.required()};
+    std::visit(
+        [&](const auto& target) {
+            using Target = std::decay_t<decltype(target)>;
+            if constexpr (std::is_same_v<Target, SceneKey::Number>) {
+                description.values = values_of(target.rule);
+                description.value_now = number_json(*target.setting);
+            } else if constexpr (std::is_same_v<Target, SceneKey::Count>) {
+                description.values = values_of(target.rule);
+                description.value_now = std::to_string(*target.setting);
+            } else if constexpr (std::is_same_v<Target, SceneKey::Flag>) {
+                description.values = "true or false";
+                description.value_now = *target.setting ? "true" : "false";
+            } else if constexpr (std::is_same_v<Target, SceneKey::Vector>) {
+                description.values = "[x, y], each " + values_of(target.rule);
+                description.value_now =
+                    "[" + number_json(target.setting->x) + ", " + number_json(target.setting->y) + "]";
+            } else {
+                description.values = choices(target.spellings);
+                if (const auto now = target.now())
+                    description.value_now = "\"" + std::string(target.spellings[*now]) + "\"";
+            }
+        },
+        key.target());
+    return description;
 }
 
 }  // namespace browser

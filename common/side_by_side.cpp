@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "page.h"
+#include "page.h"  // kPanelWidth
+#include "text.h"
 
 namespace browser {
 
@@ -53,6 +54,19 @@ Image with_start_ghost(const Image& picture, const Image& start) {
         }
     }
     return ghosted;
+}
+
+Image with_trail(const Image& picture, const Image& trail) {
+    if (picture.width != trail.width || picture.height != trail.height) {
+        throw std::invalid_argument("with_trail: the pictures differ in size");
+    }
+    Image trailed = picture;
+    for (int y = 0; y < picture.height; ++y) {
+        for (int x = 0; x < picture.width; ++x) {
+            if (picture.at(x, y) == colors::kWhite) trailed.set(x, y, trail.at(x, y));
+        }
+    }
+    return trailed;
 }
 
 Image side_by_side(const Image& left, std::string_view left_label, const Image& right, std::string_view right_label) {

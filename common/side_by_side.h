@@ -14,7 +14,7 @@ namespace browser {
 // beyond the book adds under the page.
 Image canvas_of(const Image& page, int scale);
 
-// The rectangle of `picture` at (x, y), width x height pixels; what lies outside
+// The part of `picture` at (x, y), width x height pixels; what lies outside
 // `picture` is white.
 Image cropped(const Image& picture, int x, int y, int width, int height);
 
@@ -22,6 +22,12 @@ Image cropped(const Image& picture, int x, int y, int width, int height);
 // since `start` shows twice, the start a light tint of its colour. The two must be
 // the same size (pictures of one run).
 Image with_start_ghost(const Image& picture, const Image& start);
+
+// `picture` with `trail`'s pixels where `picture` is blank paper. With the trail made
+// of earlier pictures by with_start_ghost (each ghosted onto the trail in turn, from a
+// blank one), this gives what ghosting each of them onto `picture` in turn gives, with
+// one picture in memory instead of all of them.
+Image with_trail(const Image& picture, const Image& trail);
 
 // The two pictures side by side, kGapWidth apart, each under a band with its label in
 // the page's font at its normal size (a label need not grow with --scale, and a zoomed

@@ -13,7 +13,6 @@
 
 #include "message_text.h"
 #include "output_folder.h"
-#include "scene_file.h"
 #include "write_guard.h"
 
 namespace browser {
@@ -36,10 +35,6 @@ void append_number(std::string& line, double value) {
 // first so that an old value from elsewhere is not blamed.
 std::string failure_reason() { return errno != 0 ? std::strerror(errno) : "the write failed"; }
 
-bool is_shape_name(std::string_view shape) {
-    return shape == shape_name(ShapeKind::rectangle) || shape == shape_name(ShapeKind::circle);
-}
-
 // Why a dump inside the --out folder may not go where it is named, if it may not: the
 // run replaces that folder with what it writes, so the dump goes directly into it, and
 // under a name none of the run's own files has.
@@ -57,9 +52,14 @@ std::optional<std::string> not_placeable_in(const fs::path& path, const fs::path
 
 }  // namespace
 
-NonFiniteState::NonFiniteState(long step, std::size_t index, std::string_view shape)
-    : std::runtime_error("step " + std::to_string(step) + ": body " + std::to_string(index) + " (" +
-                         std::string(shape) +
+bool is_plain_word(std::string_view text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+}
+
+NonFiniteState::NonFiniteState(long step, std::size_t index, std::string_view kind)
+    : std::runtime_error("step " + std::to_string(step) + ": body " + std::to_string(index) + " (" + std::string(kind) +
                          ") has a position or velocity that is not a finite number; the scene is beyond what this "
                          "engine can compute, and nothing was written") {}
 
@@ -107,22 +107,22 @@ StateDump::~StateDump() {
     fs::remove(partial_, ignored);
 }
 
-void StateDump::row(long step, std::size_t index, std::string_view shape, Vec2 center, double angle, Vec2 velocity,
-                    double angular_velocity) {
-    write_row(step, index, std::nullopt, shape, center, angle, velocity, angular_velocity);
+void StateDump::row(long step, std::size_t index, std::string_view kind, lib::Vec2 center, double angle,
+                    lib::Vec2 velocity, double angular_velocity) {
+    write_row(step, index, std::nullopt, kind, center, angle, velocity, angular_velocity);
 }
 
-void StateDump::row(long step, std::size_t index, std::uint64_t id, std::string_view shape, Vec2 center, double angle,
-                    Vec2 velocity, double angular_velocity) {
-    write_row(step, index, id, shape, center, angle, velocity, angular_velocity);
+void StateDump::row(long step, std::size_t index, std::uint64_t id, std::string_view kind, lib::Vec2 center,
+                    double angle, lib::Vec2 velocity, double angular_velocity) {
+    write_row(step, index, id, kind, center, angle, velocity, angular_velocity);
 }
 
-void StateDump::write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view shape,
-                          Vec2 center, double angle, Vec2 velocity, double angular_velocity) {
+void StateDump::write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view kind,
+                          lib::Vec2 center, double angle, lib::Vec2 velocity, double angular_velocity) {
     if (finished_) throw std::logic_error("StateDump::row after finish()");
-    if (!is_shape_name(shape)) {
-        std::string message = "StateDump::row: unknown shape \"";
-        throw std::invalid_argument(message.append(shape).append("\""));
+    if (!is_plain_word(kind)) {
+        std::string message = "StateDump::row: a kind must be a plain word, not \"";
+        throw std::invalid_argument(message.append(kind).append("\""));
     }
     if (with_ids_ && *with_ids_ != id.has_value()) {
         throw std::logic_error(id ? "StateDump::row: an id, where the first row had none"
@@ -135,7 +135,7 @@ void StateDump::write_row(long step, std::size_t index, std::optional<std::uint6
     }
     line.append(std::to_string(step)).append(",").append(std::to_string(index));
     if (id) line.append(",").append(std::to_string(*id));
-    line.append(",").append(shape);
+    line.append(",").append(kind);
     for (const double value : {center.x, center.y, angle, velocity.x, velocity.y, angular_velocity}) {
         line += ',';
         append_number(line, value);

@@ -7,8 +7,8 @@
 //
 // Step 0 is the scene as built, before any update; step k is the state after the k-th
 // update. `index` is the body's place in the object list at that step. A stage whose
-// bodies have ids that never change (5.4 on) gives each row its body's id too, beside
-// the index, and the header says so:
+// bodies have ids that never change gives each row its body's id too, beside the
+// index, and the header says so:
 //
 //   step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity
 //   0,0,1,rectangle,500,200,2.7999999999999998,0,0,0
@@ -67,15 +67,16 @@ public:
     StateDump(const StateDump&) = delete;
     StateDump& operator=(const StateDump&) = delete;
 
-    // `shape` is "rectangle" or "circle" (shape_name() in scene_file.h spells them);
-    // anything else throws std::invalid_argument rather than write a row tools misread.
-    // Throws FileError when the write fails, std::logic_error after finish() or when the
-    // row has an id and the first row had none, or the other way round.
-    void row(long step, std::size_t index, std::string_view shape, Vec2 center, double angle, Vec2 velocity,
+    // `kind` is the body's kind as the stage's scene files spell it, a plain word
+    // (lower-case letters, digits, '_'); anything else throws std::invalid_argument
+    // rather than write a row tools misread. Throws FileError when the write fails,
+    // std::logic_error after finish() or when the row has an id and the first row had
+    // none, or the other way round.
+    void row(long step, std::size_t index, std::string_view kind, lib::Vec2 center, double angle, lib::Vec2 velocity,
              double angular_velocity);
     // The same, with the body's id.
-    void row(long step, std::size_t index, std::uint64_t id, std::string_view shape, Vec2 center, double angle,
-             Vec2 velocity, double angular_velocity);
+    void row(long step, std::size_t index, std::uint64_t id, std::string_view kind, lib::Vec2 center, double angle,
+             lib::Vec2 velocity, double angular_velocity);
 
     // Completes the file and renames it to `path`. Throws FileError, and removes the
     // partial file, when any write failed or the rename is refused.
@@ -84,8 +85,8 @@ public:
     const std::filesystem::path& path() const { return path_; }
 
 private:
-    void write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view shape, Vec2 center,
-                   double angle, Vec2 velocity, double angular_velocity);
+    void write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view kind,
+                   lib::Vec2 center, double angle, lib::Vec2 velocity, double angular_velocity);
     [[noreturn]] void fail(const std::string& reason);
 
     std::filesystem::path path_;
@@ -100,8 +101,11 @@ private:
 
 // A step that made a number no double can be: the run stops, naming the body and the
 // step, and writes nothing (exit status 3, docs/scene_format.md).
+// Whether `text` is a plain word: lower-case letters, digits and '_', at least one.
+bool is_plain_word(std::string_view text);
+
 struct NonFiniteState : std::runtime_error {
-    NonFiniteState(long step, std::size_t index, std::string_view shape);
+    NonFiniteState(long step, std::size_t index, std::string_view kind);
 };
 
 }  // namespace browser

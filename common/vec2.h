@@ -5,10 +5,13 @@
 //
 // Coordinates are the canvas's: +x right, +y DOWN. So `rotate` by a positive angle,
 // which is the ordinary math formula, looks clockwise on screen.
+//
+// Its namespace is the book's folder for it, Lib: shared math that the engine and the
+// browser both use, and neither owns.
 
 #include <cmath>
 
-namespace browser {
+namespace lib {
 
 struct Vec2 {
     double x = 0.0;
@@ -57,4 +60,4 @@ struct Vec2 {
     friend constexpr bool operator==(Vec2, Vec2) = default;
 };
 
-}  // namespace browser
+}  // namespace lib

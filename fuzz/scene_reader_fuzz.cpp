@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "circle.h"
 #include "fuzz_check.h"
@@ -18,11 +19,11 @@
 
 namespace {
 
-void build(const browser::BodyDescription& body) {
+void build(const engine::BodyDescription& body) {
     const engine::PhysicalAttributes attributes{
         .mass = body.mass, .friction = body.friction, .restitution = body.restitution};
     try {
-        if (body.shape == browser::ShapeKind::circle) {
+        if (body.shape == engine::ShapeType::Circle) {
             engine::Circle circle(body.center, body.radius, attributes);
             circle.rotate(body.angle);
             circle.setVelocity(body.velocity);
@@ -41,10 +42,11 @@ void build(const browser::BodyDescription& body) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     engine::WorldSettings world = engine::kBookWorld;
+    std::vector<engine::BodyDescription> bodies;
+    const browser::SceneList body_list = engine::bodyList(bodies);
     try {
-        for (const browser::BodyDescription& body :
-             browser::read_scene_text(text, "fuzz.json", engine::worldKeys(world)))
-            build(body);
+        browser::read_scene_text(text, "fuzz.json", engine::worldKeys(world), {&body_list, 1});
+        for (const engine::BodyDescription& body : bodies) build(body);
     } catch (const browser::SceneError& refusal) {
         fuzz::require(fuzz::one_line(refusal.what()), "a refusal is one line:", refusal.what());
         fuzz::require(world == engine::kBookWorld, "a refused scene changes no setting");

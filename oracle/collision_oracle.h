@@ -25,7 +25,7 @@
 
 namespace oracle {
 
-using browser::Vec2;
+using lib::Vec2;
 
 struct Box {
     Vec2 center;

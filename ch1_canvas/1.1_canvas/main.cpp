@@ -1,8 +1,10 @@
 // The stage's index.html: it puts the canvas and the help text on the page, loads the
 // engine core and the user control script, and sends every key press to the script.
+// The stage program (common/stage_main.h) does the rest: the options, the run and
+// its exit statuses.
 
-#include "browser.h"
 #include "core.h"
+#include "stage_main.h"
 #include "user_control.h"
 
 namespace {
@@ -30,30 +32,21 @@ constexpr const char* kHelp =
     "  F: draw a random rectangle\n"
     "  G: draw a random circle\n";
 
-// Chapter 1 has no engine loop yet: the page only reacts to keys.
-class Page final : public browser::PageScripts {
+// Chapter 1 has no engine loop yet: the page only reacts to keys, and the help text
+// stands in the echo panel.
+class Page final : public browser::StagePage {
 public:
-    explicit Page(engine::UserControl& control) : control_(control) {}
+    Page(browser::Window& window, browser::Random& random) : core_(window.document.canvas), control_(core_, random) {
+        window.document.ui_echo = kHelp;
+    }
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
     void onAnimationFrame() override {}
 
 private:
-    engine::UserControl& control_;
+    engine::Core core_;
+    engine::UserControl control_;
 };
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
-    if (!command_line.options) return command_line.exit_status;
-    const browser::Options& options = *command_line.options;
-
-    browser::Window window(options);
-    window.document.ui_echo = kHelp;
-    browser::Random random(options.seed);
-
-    engine::Core core(window.document.canvas);
-    engine::UserControl control(core, random);
-    Page page(control);
-    return browser::run(page, window, options);
-}
+int main(int argc, char** argv) { return browser::run_stage<Page>(argc, argv, kStage); }

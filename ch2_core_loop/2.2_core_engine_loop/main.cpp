@@ -1,9 +1,12 @@
 // The stage's index.html: the canvas and the echo panel, the engine core with its
-// scene, and the user control script that every key press goes to.
+// scene, and the user control script that every key press goes to. The stage program
+// (common/stage_main.h) does the rest: the options, the run's budget and its exit
+// statuses.
 
-#include "browser.h"
 #include "core.h"
 #include "my_game.h"
+#include "page_world.h"
+#include "stage_main.h"
 #include "user_control.h"
 
 namespace {
@@ -30,30 +33,20 @@ const browser::StageDefaults kStage{
 };
 // clang-format on
 
-class Page final : public browser::PageScripts {
+class Page final : public browser::StagePage {
 public:
-    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    Page(browser::Window& window, browser::Random& random) : core_(window), control_(core_, random) {
+        engine::buildScene(core_);
+    }
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
     void onAnimationFrame() override { core_.runGameLoop(); }
+    browser::PageWorld world() override { return engine::pageWorld(core_); }
 
 private:
-    engine::Core& core_;
-    engine::UserControl& control_;
+    engine::Core core_;
+    engine::UserControl control_;
 };
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
-    if (!command_line.options) return command_line.exit_status;
-    const browser::Options& options = *command_line.options;
-
-    browser::Window window(options);
-    browser::Random random(options.seed);
-
-    engine::Core core(window);
-    engine::buildScene(core);
-    engine::UserControl control(core, random);
-    Page page(core, control);
-    return browser::run(page, window, options);
-}
+int main(int argc, char** argv) { return browser::run_stage<Page>(argc, argv, kStage); }

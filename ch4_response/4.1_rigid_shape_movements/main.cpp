@@ -1,17 +1,13 @@
 // The stage's index.html: the canvas and the echo panel, the engine core with its
 // scene (the book's, or one from --scene FILE), and the user control script that every
-// key press goes to. With --dump FILE it also writes every body's state after every
-// fixed step.
+// key press goes to. The stage program (common/stage_main.h) does the rest: the
+// options, --scene and --dump, the run's budget and its exit statuses.
 
-#include <cmath>
-#include <iostream>
-#include <optional>
-#include <string>
-
-#include "browser.h"
 #include "core.h"
 #include "my_game.h"
+#include "page_world.h"
 #include "scene_io.h"
+#include "stage_main.h"
 #include "user_control.h"
 
 namespace {
@@ -30,10 +26,6 @@ const browser::StageDefaults kStage{
     .keys = "comma a*25 s*3 f g d*50 f g 5 l*60 i*45 o*10 6 l*50 i*40 7 j*60 i*45 u*8 8 z*30 5",
     .frames = 300,
     .every = 30,
-    .extra_options = {
-        {"--scene", "FILE", "build the world from this JSON scene file instead of the book's scene", ""},
-        {"--dump", "FILE", "write every body's state after every fixed step to this CSV file", ""},
-    },
     // Every key user_control.cpp reacts to, as the README lists them.
     .key_help = {
         {"0-9 up down", "select an object: by its number, the one before, the one after"},
@@ -54,85 +46,25 @@ const browser::StageDefaults kStage{
 };
 // clang-format on
 
-class Page final : public browser::PageScripts {
+class Page final : public browser::StagePage {
 public:
-    Page(engine::Core& core, engine::UserControl& control) : core_(core), control_(control) {}
+    Page(browser::Window& window, browser::Random& random, const engine::Scene* scene)
+        : core_(window, scene ? scene->world : engine::kBookWorld), control_(core_, random) {
+        if (scene) {
+            engine::buildScene(core_, scene->bodies);
+        } else {
+            engine::buildScene(core_);
+        }
+    }
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
     void onAnimationFrame() override { core_.runGameLoop(); }
-    browser::StepCost stepCost() const override { return engine::stepCost(core_); }
+    browser::PageWorld world() override { return engine::pageWorld(core_); }
 
 private:
-    engine::Core& core_;
-    engine::UserControl& control_;
+    engine::Core core_;
+    engine::UserControl control_;
 };
-
-// A scene's canvas size in whole pixels.
-int pixels(double size) { return static_cast<int>(std::ceil(size)); }
-
-// Runs the page, writing the state dump alongside when one is asked for: step 0 as
-// built, then a row per body after every fixed step. The dump is only completed when
-// the whole run succeeded. A step that leaves a number no double can be stops the run
-// (exit status 3) before it draws a NaN picture; nothing is written then.
-int runPage(Page& page, browser::Window& window, engine::Core& core, const browser::Options& options) {
-    const std::string& dump_file = options.extra.at("--dump");
-    try {
-        std::optional<browser::StateDump> dump;
-        if (!dump_file.empty()) {
-            dump.emplace(dump_file, options.out_dir, browser::files_read(options));
-            engine::dumpState(*dump, core);
-        }
-        core.onStep([&] {
-            if (dump) engine::dumpState(*dump, core);
-            engine::checkFinite(core);
-        });
-        const int status = browser::run(page, window, options);
-        if (status == 0 && dump) dump->finish();
-        return status;
-    } catch (const browser::NonFiniteState& error) {
-        std::cerr << error.what() << '\n';
-        return 3;
-    } catch (const browser::OutputRefused& error) {
-        std::cerr << error.what() << '\n';
-        return 2;
-    } catch (const browser::FileError& error) {
-        std::cerr << error.what() << '\n';
-        return 1;
-    }
-}
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const browser::ParsedCommandLine command_line = browser::parse_command_line(argc, argv, kStage);
-    if (!command_line.options) return command_line.exit_status;
-    browser::Options options = *command_line.options;
-
-    // A scene that cannot be simulated stops the program before anything is written.
-    std::optional<engine::Scene> scene;
-    if (const std::string& scene_file = options.extra.at("--scene"); !scene_file.empty()) {
-        try {
-            scene = engine::loadScene(scene_file);
-        } catch (const browser::SceneError& error) {
-            std::cerr << error.what() << '\n';
-            return 2;
-        }
-    }
-    const engine::WorldSettings settings = scene ? scene->world : engine::kBookWorld;
-    // The default key script was written for the book's scene; a scene file runs
-    // untouched unless --keys says otherwise.
-    if (scene && !options.keys_given) options.keys = browser::KeyScript();
-
-    browser::Window window(options,
-                           browser::Document{browser::Canvas(pixels(settings.width), pixels(settings.height))});
-    browser::Random random(options.seed);
-
-    engine::Core core(window, settings);
-    if (scene) {
-        engine::buildScene(core, scene->bodies);
-    } else {
-        engine::buildScene(core);
-    }
-    engine::UserControl control(core, random);
-    Page page(core, control);
-    return runPage(page, window, core, options);
-}
+int main(int argc, char** argv) { return browser::run_stage<Page>(argc, argv, kStage, engine::kSceneFiles); }

@@ -1,45 +1,68 @@
 #pragma once
-// Scene files in, state dumps out (--scene FILE, --dump FILE): the bridge between what
-// the browser reads and writes (scene_file.h, state_dump.h) and the stage's world.
-// Neither is in the book: they let a reader change the scene without recompiling, and
-// compare this engine's numbers, step by step, with the book's JavaScript.
+// Scene files (--scene FILE): the stage's vocabulary, the words a scene may use, each
+// bound to the setting or the member it fills, and the world built from a scene. Not in
+// the book: a reader changes the scene without recompiling (docs/scene_format.md). The
+// browser reads the JSON and reports every problem in one format (scene_file.h); the
+// words, their rules and their defaults are the stage's, written here once.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
-#include "browser.h"
 #include "core.h"
 #include "scene_file.h"
-#include "state_dump.h"
+#include "stage_main.h"
 #include "world_settings.h"
 
 namespace engine {
 
-// The world keys the stage reads, bound to `world`: one for each of its settings.
-std::vector<browser::WorldKey> worldKeys(WorldSettings& world);
+// One body of a scene file, as its keys describe it (bodyKeys).
+struct BodyDescription {
+    ShapeType shape = ShapeType::Rectangle;
+    Vec2 center;
+    double width = 0.0;   // rectangles only
+    double height = 0.0;  // rectangles only
+    double radius = 0.0;  // circles only
+    double mass = 1.0;    // 0 makes the body static
+    double friction = 0.8;
+    double restitution = 0.2;
+    double angle = 0.0;  // rad, applied after construction as the book's rotate(angle)
+    Vec2 velocity;
+    double angular_velocity = 0.0;  // rad/s
 
-// A scene file, read with the stage's world keys: the book's world where the file
-// says nothing, and the file's bodies. Throws browser::SceneError with one line.
+    friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
+};
+
+// The world keys the stage reads, bound to `world`: one for each of its settings.
+std::vector<browser::SceneKey> worldKeys(WorldSettings& world);
+// The keys a body of `body.shape` takes, bound to `body`, in the order refusals list them.
+std::vector<browser::SceneKey> bodyKeys(BodyDescription& body);
+// The "bodies" list of a scene: each element a body of one of the shapes, read into
+// `bodies` in file order.
+browser::SceneList bodyList(std::vector<BodyDescription>& bodies);
+// How scene files and state dumps spell a shape type: "rectangle", "circle".
+std::string_view shapeName(ShapeType type);
+
+// A scene file, read with the stage's keys: the book's world where the file says
+// nothing, and the file's bodies. Throws browser::SceneError with one line.
 struct Scene {
     WorldSettings world = kBookWorld;
-    std::vector<browser::BodyDescription> bodies;
+    std::vector<BodyDescription> bodies;
 };
 Scene loadScene(const std::filesystem::path& file);
+// The same for a scene that is already text; `source` stands for the file in a refusal.
+Scene readScene(const std::string& text, std::string_view source);
+
+// The canvas a scene's world asks for, px (nullptr: the book's).
+std::pair<double, double> canvasOf(const Scene* scene);
+// What the stage program needs to read scene files (common/stage_main.h).
+inline constexpr browser::SceneFiles<Scene> kSceneFiles{.load = loadScene, .canvas = canvasOf};
 
 // Adds the bodies of a scene file, in file order (object 0 is the first body), in
 // place of the book's MyGame scene. Each is built as the book builds a shape, then
 // turned with rotate(angle) and set moving with its velocity and angular velocity.
-void buildScene(Core& core, const std::vector<browser::BodyDescription>& bodies);
-
-// One row per object for the core's current step (0 before any update).
-void dumpState(browser::StateDump& dump, const Core& core);
-
-// The last guard against a scene beyond what the engine can compute: throws
-// browser::NonFiniteState naming the first object whose position or velocity is not a
-// finite number.
-void checkFinite(const Core& core);
-
-// What one fixed step of the core's world costs at most, for the run's budget.
-browser::StepCost stepCost(const Core& core);
+void buildScene(Core& core, const std::vector<BodyDescription>& bodies);
 
 }  // namespace engine

@@ -15,7 +15,7 @@
 
 namespace engine {
 
-using browser::Vec2;
+using lib::Vec2;
 
 class CollisionInfo {
 public:

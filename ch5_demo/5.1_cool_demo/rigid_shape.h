@@ -30,7 +30,7 @@
 
 namespace engine {
 
-using browser::Vec2;
+using lib::Vec2;
 
 enum class ShapeType { Rectangle, Circle };
 

@@ -15,7 +15,7 @@
 
 namespace engine {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // Written inline, here: the narrow phase makes one for every pair that collides, and
 // an out-of-line constructor would pass its numbers through memory on every one.

@@ -15,7 +15,7 @@
 
 namespace engine {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // The book's world advances in fixed steps of 1/60 s, whatever the frame rate.
 inline constexpr double kFPS = 60.0;

@@ -14,6 +14,11 @@ namespace {
 // A quarter of the depth: a shape stopped within it of the depth is in the obstacle by
 // at least three quarters of the depth, and by no more than the depth.
 constexpr double kToleranceShare = 0.25;
+// How deep a shape already in contact may go before it is stopped, at most, and how far
+// short of the obstacle its centre is kept when it is in deeper still: shares of its
+// smallest extent (impactAgainst).
+constexpr double kDeepestShare = 0.75;
+constexpr double kCentreMargin = 0.25;
 
 double pointToSegment(Vec2 point, Vec2 a, Vec2 b) {
     const Vec2 along = b - a;
@@ -43,10 +48,35 @@ double pointToQuad(Vec2 point, const std::array<Vec2, 4>& corners) {
     return nearest;
 }
 
-// Two convex shapes apart are nearest at a corner of one of them; two that overlap have
-// a corner of one inside the other (the sweep never makes them cross without one: it
-// stops them before they meet).
+// Whether two convex quadrilaterals overlap: no line along a side of either has one
+// wholly on each side of it (the separating axis theorem). A pulled-in outline may
+// have sides of no length; they separate nothing, and the others decide.
+bool overlap(const std::array<Vec2, 4>& a, const std::array<Vec2, 4>& b) {
+    for (const std::array<Vec2, 4>* sides : {&a, &b}) {
+        for (std::size_t i = 0; i < sides->size(); ++i) {
+            const Vec2 side = (*sides)[(i + 1) % 4] - (*sides)[i];
+            const Vec2 across{-side.y, side.x};
+            double a_low = std::numeric_limits<double>::infinity(), a_high = -a_low;
+            double b_low = a_low, b_high = a_high;
+            for (Vec2 corner : a) {
+                a_low = std::min(a_low, across.dot(corner));
+                a_high = std::max(a_high, across.dot(corner));
+            }
+            for (Vec2 corner : b) {
+                b_low = std::min(b_low, across.dot(corner));
+                b_high = std::max(b_high, across.dot(corner));
+            }
+            if (a_high < b_low || b_high < a_low) return false;
+        }
+    }
+    return true;
+}
+
+// Two convex shapes apart are nearest at a corner of one of them. Two that overlap need
+// not have a corner of either inside the other: a thin plate can cross a thin wall like
+// an X (the solver can leave them so), which only the separating axes see.
 double quadToQuad(const std::array<Vec2, 4>& a, const std::array<Vec2, 4>& b) {
+    if (overlap(a, b)) return 0.0;
     double nearest = std::numeric_limits<double>::infinity();
     for (Vec2 corner : a) nearest = std::min(nearest, pointToQuad(corner, b));
     for (Vec2 corner : b) nearest = std::min(nearest, pointToQuad(corner, a));
@@ -74,20 +104,47 @@ bool mayMeet(const RigidShape& shape, Vec2 from, Vec2 to, const RigidShape& othe
     return pointToSegment(other.center(), from, to) <= shape.boundRadius() + other.boundRadius();
 }
 
-// The time of impact, for a shape that may already touch the obstacle where its motion
-// starts: the solver left it there, in contact, but its spin or the other contacts may
-// still carry it on into the obstacle and through. Then the target depth is doubled
-// until the outline pulled in by it is clear at the start, up to half the shape's
-// smallest extent: deeper than that the shape's middle would be in the obstacle. 0
-// when even that touches at the start: a contact that deep is the step's collision
-// handling's alone.
-std::optional<double> impactFromContact(const StepMotion& motion, const Outline& obstacle, double extent) {
-    std::optional<double> impact;
-    for (double depth = std::min(kImpactDepth, extent / 4); depth <= extent / 2; depth *= 2) {
-        impact = timeOfImpact(motion, obstacle, depth);
-        if (!impact || *impact > 0.0) return impact;
+// The share t of the straight path from `from` by `offset` (0 <= t <= 1) at which a
+// point enters the obstacle's outline: 0 when it starts inside, nothing when it never
+// enters. The outline is convex: the path is inside every side's half plane at once
+// from the last side it crosses inwards until the first it crosses outwards.
+std::optional<double> entryAlong(Vec2 from, Vec2 offset, const Outline& obstacle) {
+    if (obstacle.is_point) {
+        // |from + offset t - centre| = radius: the smaller root, when there is one.
+        const Vec2 away = from - obstacle.center;
+        const double a = offset.dot(offset), b = away.dot(offset),
+                     c = away.dot(away) - obstacle.radius * obstacle.radius;
+        if (c <= 0.0) return 0.0;
+        const double discriminant = b * b - a * c;
+        if (a <= 0.0 || discriminant < 0.0) return std::nullopt;
+        const double t = (-b - std::sqrt(discriminant)) / a;
+        if (t < 0.0 || t > 1.0) return std::nullopt;
+        return t;
     }
-    return std::nullopt;
+    const std::array<Vec2, 4>& c = obstacle.corners;
+    // Which way round the corners run: the sign of the area.
+    double area = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) area += c[i].cross(c[(i + 1) % 4]);
+    const double turn = area >= 0.0 ? 1.0 : -1.0;
+    double enter = 0.0, leave = 1.0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const Vec2 side = c[(i + 1) % 4] - c[i];
+        const Vec2 outward = Vec2{side.y, -side.x} * turn;
+        const double ahead = outward.dot(c[i] - from);  // >= 0: `from` is on the inner side
+        const double closing = outward.dot(offset);
+        if (closing == 0.0) {
+            if (ahead < 0.0) return std::nullopt;
+            continue;
+        }
+        const double t = ahead / closing;
+        if (closing < 0.0) {
+            enter = std::max(enter, t);
+        } else {
+            leave = std::min(leave, t);
+        }
+    }
+    if (enter > leave) return std::nullopt;
+    return enter;
 }
 
 }  // namespace
@@ -154,6 +211,28 @@ std::optional<double> timeOfImpact(const StepMotion& motion, const Outline& obst
     return t;
 }
 
+// The time of impact, for a shape that may already touch the obstacle where its motion
+// starts: the solver left it there, in contact, but its spin or the other contacts may
+// still carry it on into the obstacle and through. Then the target depth is doubled
+// until the outline pulled in by it is clear at the start, up to kDeepestShare of the
+// shape's smallest extent (its thinness): the pulled-in outline still holds the centre,
+// which is then still outside. A shape in deeper than that (a plate thinner than the
+// solver's slop can rest there) is held back only by its centre: it is stopped
+// kCentreMargin of its thinness before its centre would enter the obstacle, for with
+// the centre inside, the narrow phase could push the shape out on the far side. A
+// centre already inside is the step's collision handling's alone.
+std::optional<double> impactAgainst(const StepMotion& motion, const Outline& obstacle, double extent) {
+    const double deepest = kDeepestShare * extent;
+    for (double depth = std::min(kImpactDepth, extent / 4);; depth = std::min(2 * depth, deepest)) {
+        const std::optional<double> impact = timeOfImpact(motion, obstacle, depth);
+        if (!impact || *impact > 0.0) return impact;
+        if (depth == deepest) break;
+    }
+    const std::optional<double> entry = entryAlong(motion.start.center, motion.offset, obstacle);
+    if (!entry || *entry == 0.0) return std::nullopt;
+    return std::max(*entry - kCentreMargin * extent / motion.offset.length(), 0.0);
+}
+
 void ContinuousCollision::startStep(ShapeList shapes) {
     start_.resize(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) start_[i] = {shapes[i]->center(), shapes[i]->angle()};
@@ -182,7 +261,7 @@ void ContinuousCollision::sweep(ShapeList shapes) {
         const auto sweepAgainst = [&](std::size_t j) {
             const RigidShape& other = *shapes[j];
             if (j == i || !mayMeet(shape, start.center, shape.center(), other)) return;
-            const std::optional<double> impact = impactFromContact(motion, outlineOf(other), extent);
+            const std::optional<double> impact = impactAgainst(motion, outlineOf(other), extent);
             if (impact && (!first || *impact < *first)) first = impact;
         };
         if (shape.isBullet()) {

@@ -22,6 +22,14 @@
 // the gap is under a quarter of the depth. A head-on shot needs one advance, a grazing
 // one a few; kMaxAdvances bounds them, and a shape stopped by that bound is stopped
 // short of the obstacle, never inside it.
+//
+// Every bound comes from the shape's own extent: its reach (a plate's half diagonal)
+// bounds how fast its points move as it turns, and its thinness (half its shorter
+// side) how deep it may be stopped. A shape the solver has left deep in contact (a
+// plate thinner than the sequential impulse solver's slop sinks in by more than half
+// its thickness) is swept deeper, up to three quarters of its thinness, and beyond that
+// only its centre is kept out: a centre outside the obstacle is what makes the next
+// step's collision handling push it back the way it came (README.md, the envelope).
 
 #include <array>
 #include <cstddef>
@@ -82,6 +90,10 @@ bool isFast(const RigidShape& shape, Vec2 offset, double turn);
 // Nothing when that never happens in this motion; 0 when the two already touch that
 // deep where the motion starts.
 std::optional<double> timeOfImpact(const StepMotion& motion, const Outline& obstacle, double depth);
+// Where the sweep stops a shape whose smallest extent is `extent` and which may already
+// touch `obstacle` where its motion starts: the share of the motion, or nothing when it
+// need not be stopped (continuous.cpp says how it goes deeper for a shape in contact).
+std::optional<double> impactAgainst(const StepMotion& motion, const Outline& obstacle, double extent);
 
 // What the sweep did to one fast shape in the last step (the overlay draws it).
 struct Sweep {

@@ -8,10 +8,9 @@
 
 TEST_CASE("box2d_world: masses and inertias in the scene's units") {
     bench::SceneDescription scene;
-    scene.bodies = {
-        {.shape = browser::ShapeKind::rectangle, .center = {300, 200}, .width = 40, .height = 20, .mass = 2},
-        {.shape = browser::ShapeKind::circle, .center = {100, 100}, .radius = 15, .mass = 3},
-        {.shape = browser::ShapeKind::rectangle, .center = {400, 400}, .width = 800, .height = 20, .mass = 0}};
+    scene.bodies = {{.shape = bench::Shape::rectangle, .center = {300, 200}, .width = 40, .height = 20, .mass = 2},
+                    {.shape = bench::Shape::circle, .center = {100, 100}, .radius = 15, .mass = 3},
+                    {.shape = bench::Shape::rectangle, .center = {400, 400}, .width = 800, .height = 20, .mass = 0}};
     const bench::Snapshot bodies = bench::box2d_world(scene)->snapshot();
     REQUIRE(bodies.size() == 3);
     // Box2D works in single precision.
@@ -31,7 +30,7 @@ TEST_CASE("box2d_world: a free fall in px, s and the scene's dt") {
     bench::SceneDescription scene;
     scene.world.gravity = {0, 20};
     scene.world.dt = 1.0 / 60;
-    scene.bodies = {{.shape = browser::ShapeKind::circle, .center = {100, 100}, .radius = 10}};
+    scene.bodies = {{.shape = bench::Shape::circle, .center = {100, 100}, .radius = 10}};
     const auto world = bench::box2d_world(scene);
     world->run(60);
     const bench::Snapshot after = world->snapshot();

@@ -9,7 +9,7 @@
 namespace {
 
 using bench::BodyState;
-using browser::Vec2;
+using lib::Vec2;
 
 BodyState box(Vec2 center, double width, double height, bool fixed = false, double angle = 0.0) {
     return {.shape = oracle::Box{center, width, height, angle}, .is_static = fixed, .mass = fixed ? 0.0 : 1.0};
@@ -18,8 +18,8 @@ BodyState disc(Vec2 center, double radius, bool fixed = false) {
     return {.shape = oracle::Disc{center, radius}, .is_static = fixed, .mass = fixed ? 0.0 : 1.0};
 }
 
-browser::BodyDescription body_box(Vec2 center, double width, double height, double mass, double angle = 0.0) {
-    return {.shape = browser::ShapeKind::rectangle,
+bench::BodyDescription body_box(Vec2 center, double width, double height, double mass, double angle = 0.0) {
+    return {.shape = bench::Shape::rectangle,
             .center = center,
             .width = width,
             .height = height,

@@ -4,10 +4,18 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "near.h"
 #include "random.h"
@@ -268,4 +276,161 @@ TEST_CASE("tools/book_runner_compare runs both and gives first_divergence's verd
     CHECK(bad.status == 2);
     CHECK(test::isOneLine(bad.error));
     CHECK_THAT(bad.error, Catch::Contains("a book project is X.Y"));
+}
+
+namespace {
+
+// A copy of the stand-in project to spoil, in `folder`/book.
+fs::path standinCopy(const test::ScratchFolder& folder) {
+    const fs::path book = folder.path / "book";
+    fs::copy(STANDIN_PROJECT, book, fs::copy_options::recursive);
+    return book;
+}
+
+Run runOn(const test::ScratchFolder& folder, const fs::path& book, const std::string& arguments,
+          const std::string& before = "") {
+    return runCommand(folder,
+                      before + "timeout 60 " + test::quoted(BOOK_RUNNER) + " " + test::quoted(book) + " " + arguments);
+}
+
+void replaceIn(const fs::path& file, const std::string& from, const std::string& to) {
+    std::string text = test::readText(file);
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(file) << text;
+}
+
+}  // namespace
+
+TEST_CASE("the runner reads only regular files of the project it was given, each in one line when refused",
+          "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_files");
+    const fs::path dump = folder.path / "book.csv";
+    const std::string args = "--frames 3 --dump " + test::quoted(dump);
+    const auto refused = [&](const fs::path& book, const std::string& says) {
+        const Run run = runOn(folder, book, args);
+        INFO(run.error);
+        CHECK(run.status == 2);
+        CHECK(test::isOneLine(run.error));
+        CHECK_THAT(run.error, Catch::Contains(says));
+        CHECK_FALSE(fs::exists(dump));
+    };
+    // A FIFO as index.html or as a script once waited for ever; a script linked to
+    // /dev/zero grew to 13.8 GB.
+    const fs::path fifo_index = standinCopy(folder);
+    fs::remove(fifo_index / "public_html" / "index.html");
+    REQUIRE(::mkfifo((fifo_index / "public_html" / "index.html").c_str(), 0600) == 0);
+    refused(fifo_index, "index.html: it is a FIFO, not a regular file");
+    fs::remove_all(fifo_index);
+    const fs::path fifo_script = standinCopy(folder);
+    fs::remove(fifo_script / "public_html" / "MyGame.js");
+    REQUIRE(::mkfifo((fifo_script / "public_html" / "MyGame.js").c_str(), 0600) == 0);
+    refused(fifo_script, "MyGame.js: it is a FIFO, not a regular file");
+    fs::remove_all(fifo_script);
+    const fs::path zero = standinCopy(folder);
+    fs::remove(zero / "public_html" / "MyGame.js");
+    fs::create_symlink("/dev/zero", zero / "public_html" / "MyGame.js");
+    refused(zero, "its script MyGame.js lies outside the project folder");
+    fs::remove_all(zero);
+    // A script from outside the folder given, by a path or by a link, is never read.
+    const fs::path climbing = standinCopy(folder);
+    replaceIn(climbing / "public_html" / "index.html", "src=\"MyGame.js\"",
+              "src=\"../../../../../../../etc/hostname\"");
+    refused(climbing, "lies outside the project folder");
+    fs::remove_all(climbing);
+}
+
+TEST_CASE("a script that allocates for ever ends the run in one line, status 3, nothing written",
+          "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_memory");
+    const fs::path dump = folder.path / "book.csv";
+    const fs::path book = standinCopy(folder);
+    std::ofstream(book / "public_html" / "MyGame.js", std::ios::app)
+        << "\nvar hog = []; while (true) hog.push(new Array(100000).fill(1.5));\n";
+    // A small heap for the test; by default it is 2 GB.
+    const Run run = runOn(folder, book, "--frames 3 --dump " + test::quoted(dump), "BOOK_RUNNER_HEAP_MB=64 ");
+    INFO(run.error);
+    CHECK(run.status == 3);
+    CHECK(test::isOneLine(run.error));
+    CHECK_THAT(run.error, Catch::Contains("the book's code ran out of memory"));
+    CHECK(folder.files() == std::vector<std::string>{"book", "run_stderr.txt", "run_stdout.txt"});
+}
+
+TEST_CASE("a number beyond a double's range in a scene is named as such", "[book_runner_test]") {
+    test::ScratchFolder folder("book_runner_range");
+    const fs::path scene =
+        writeFile(folder, "big.json", R"({"bodies": [{"shape": "circle", "center": [1e400, 2], "radius": 3}]})");
+    const Run run = runBook(
+        folder, "--scene " + test::quoted(scene) + " --frames 3 --dump " + test::quoted(folder.path / "book.csv"));
+    CHECK(run.status == 2);
+    CHECK_THAT(run.error, Catch::Contains("center[0]: must be a finite number (got a number beyond the range"));
+}
+
+TEST_CASE("SIGINT and SIGTERM end the runner by that signal, with no dump and no partial file", "[book_runner_test]") {
+    for (const int signal : {SIGINT, SIGTERM}) {
+        INFO("signal " << signal);
+        test::ScratchFolder folder("book_runner_signal");
+        const fs::path dump = folder.path / "book.csv";
+        // The stand-in's Z loops for ever: the page is busy when the signal comes.
+        const std::string command = "exec " + test::quoted(BOOK_RUNNER) + " " + test::quoted(STANDIN_PROJECT) +
+                                    " --keys z@2 --frames 5 --dump " + test::quoted(dump) + " 2>/dev/null";
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::signal(SIGINT, SIG_DFL);
+            ::signal(SIGTERM, SIG_DFL);
+            ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        const fs::path partial = dump.string() + ".partial-" + std::to_string(pid);
+        for (int wait = 0; wait < 2000 && !fs::exists(partial); ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        CHECK(fs::exists(partial));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));  // into the endless key handler
+        ::kill(pid, signal);
+        int status = 0;
+        REQUIRE(::waitpid(pid, &status, 0) == pid);
+        CHECK(WIFSIGNALED(status));
+        CHECK((WIFSIGNALED(status) ? WTERMSIG(status) : -1) == signal);
+        CHECK(folder.files().empty());
+    }
+}
+
+TEST_CASE("first_divergence: a tolerance is a plain number, a dump a regular file, memory a step of each",
+          "[book_runner_test]") {
+    test::ScratchFolder folder("first_divergence_hostile");
+    const auto trouble = [&](const std::string& arguments, const std::string& says, const std::string& before = "") {
+        const Run run = runCommand(folder, before + "timeout 60 " + test::quoted(FIRST_DIVERGENCE) + " " + arguments);
+        INFO(arguments << "\n" << run.error);
+        CHECK(run.status == 2);
+        CHECK(test::isOneLine(run.error));
+        CHECK(run.error.size() < 300);  // an out-of-range tolerance was once echoed in 300 digits
+        CHECK_THAT(run.error, Catch::Contains(says));
+    };
+    std::string rows = "step,index,shape,cx,cy,angle,vx,vy,angular_velocity\n";
+    const fs::path small = writeFile(folder, "small.csv", rows + "0,0,circle,1,2,3,4,5,6\n");
+    const std::string pair = test::quoted(small) + " " + test::quoted(small);
+    trouble(pair + " --absolute nan", "--absolute: must be a number from 0 to 1e+06 (got \"nan\")");
+    trouble(pair + " --absolute -1e300", "must be a number from 0 to 1e+06");
+    trouble(pair + " --relative 1e400", "--relative: must be a number from 0 to 1 (got \"1e400\")");
+    REQUIRE(::mkfifo((folder.path / "fifo.csv").c_str(), 0600) == 0);
+    trouble(test::quoted(folder.path / "fifo.csv") + " " + test::quoted(small), "fifo.csv: cannot read: it is a FIFO");
+    trouble(test::quoted(folder.path) + " " + test::quoted(small), "cannot read: it is a folder");
+    trouble("/dev/zero " + test::quoted(small), "/dev/zero: cannot read: it is a device");
+    writeFile(folder, "long.csv", rows + std::string(10'000, '1') + "\n");
+    trouble(test::quoted(folder.path / "long.csv") + " " + test::quoted(small), "a line longer than 4096 bytes");
+    // 1,000,000 steps of one body (25 MB) against itself, in 100 MB of address space:
+    // the whole dumps in memory took twice that.
+    if (!test::underAddressSanitizer) {
+        {
+            std::ofstream big(folder.path / "big.csv");
+            big << rows;
+            for (int step = 0; step < 1'000'000; ++step) big << step << ",0,circle,1,2,3,4,5,6\n";
+        }
+        const fs::path big = folder.path / "big.csv";
+        const Run run = runCommand(folder, "ulimit -v 100000; " + test::quoted(FIRST_DIVERGENCE) + " " +
+                                               test::quoted(big) + " " + test::quoted(big));
+        INFO(run.error);
+        CHECK(run.status == 0);
+        CHECK_THAT(run.out, Catch::Contains("agree at every step"));
+    }
 }

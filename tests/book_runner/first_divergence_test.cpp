@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dump_divergence.h"
+#include "known_differences.h"
 
 using browser::DivergenceKind;
 
@@ -74,7 +75,7 @@ TEST_CASE("names the first step, the first body and its first field that differ"
     CHECK(found->differing[1].index == 1);
     CHECK(found->differing[1].field == "cy");
 
-    const std::string text = browser::describe(*found, "ours.csv", "book.csv", {}, "");
+    const std::string text = browser::describe(*found, "ours.csv", "book.csv", {});
     CHECK_THAT(text, Catch::Contains("step 2, body 0 (rectangle): vx is 0 in ours.csv and 0.5 in book.csv"));
     CHECK_THAT(text, Catch::Contains("body 1 (circle, cy)"));
 }
@@ -111,8 +112,8 @@ TEST_CASE("a body only one dump has, a shape that differs, a run that stops", "[
             browser::first_divergence(a, dump("0,0,rectangle,100,51,0,0,0,0\n0,1,circle,300,60,0,6,0,0.5\n"));
         REQUIRE(found.has_value());
         CHECK(found->step == 0);
-        CHECK_FALSE(browser::known_difference(*found, "4.4").has_value());
-        CHECK_THAT(browser::describe(*found, "a", "b", {}, "4.4"), Catch::Contains("same scene file"));
+        CHECK_FALSE(errata::known_difference(*found, "4.4").has_value());
+        CHECK_THAT(browser::describe(*found, "a", "b", {}), Catch::Contains("same scene file"));
     }
 }
 
@@ -129,7 +130,7 @@ TEST_CASE("files that are not state dumps are refused with their line", "[first_
     CHECK_THAT(refused("x,y\n"), Catch::StartsWith("bad.csv:1: not a state dump"));
     CHECK_THAT(refused(kHeader + "0,0,rectangle,1,2,3\n"),
                Catch::StartsWith("bad.csv:2: a row has 9 fields, this has 6"));
-    CHECK_THAT(refused(kHeader + "0,0,triangle,1,2,3,4,5,6\n"), Catch::Contains("rectangle or circle"));
+    CHECK_THAT(refused(kHeader + "0,0,Triangle,1,2,3,4,5,6\n"), Catch::Contains("the shape must be a plain word"));
     CHECK_THAT(refused(kHeader + "0,0,circle,1,2,x,4,5,6\n"), Catch::Contains("angle is not a number"));
     // Bodies numbered 0, 2: a row is missing; a step that goes back; a dump not starting at step 0.
     CHECK_THAT(refused(kHeader + "0,0,circle,1,2,3,4,5,6\n0,2,circle,1,2,3,4,5,6\n"),
@@ -169,37 +170,65 @@ TEST_CASE("the errata entry that explains a divergence, by stage and sign", "[fi
     const auto circle = browser::first_divergence(a, spun);
     REQUIRE(circle.has_value());
     // A circle's numbers: its inertia, which only the angular impulse of 4.4 on uses.
-    REQUIRE(browser::known_difference(*circle, "4.4").has_value());
-    CHECK(browser::known_difference(*circle, "4.4")->heading == "Circle inertia (fixed, 4.1 on)");
-    CHECK(browser::known_difference(*circle, "5.1")->heading == "Circle inertia (fixed, 4.1 on)");
-    CHECK_FALSE(browser::known_difference(*circle, "4.3").has_value());
-    CHECK_THAT(browser::describe(*circle, "a", "b", {}, "4.4"),
+    REQUIRE(errata::known_difference(*circle, "4.4").has_value());
+    CHECK(errata::known_difference(*circle, "4.4")->heading == "Circle inertia (fixed, 4.1 on)");
+    CHECK(errata::known_difference(*circle, "5.1")->heading == "Circle inertia (fixed, 4.1 on)");
+    CHECK_FALSE(errata::known_difference(*circle, "4.3").has_value());
+    CHECK_THAT(errata::explanation(*circle, "4.4"),
                Catch::Contains("known difference: docs/errata.md#circle-inertia-fixed-41-on"));
-    CHECK_THAT(browser::describe(*circle, "a", "b", {}, "4.3"), Catch::Contains("no entry of docs/errata.md"));
+    CHECK_THAT(errata::explanation(*circle, "4.3"), Catch::Contains("no entry of docs/errata.md"));
 
     // A box's numbers are no circle's inertia.
     const auto box = browser::first_divergence(a, dump(kStart + "1,0,rectangle,100,50.1,0,0,1,0.1\n" + kStep1Circle));
     REQUIRE(box.has_value());
-    CHECK_FALSE(browser::known_difference(*box, "4.4").has_value());
+    CHECK_FALSE(errata::known_difference(*box, "4.4").has_value());
 
     // A body leaving the list, and a run that stops: the book's 5.1 removal and frozen page.
     const auto removed = browser::first_divergence(a, dump(kStart + kStep1Box));
-    CHECK(browser::known_difference(*removed, "5.1")->heading ==
+    CHECK(errata::known_difference(*removed, "5.1")->heading ==
           "Out-of-bounds removal no longer skips the next shape's step (5.1)");
-    CHECK_FALSE(browser::known_difference(*removed, "4.4").has_value());
+    CHECK_FALSE(errata::known_difference(*removed, "4.4").has_value());
     const auto stopped = browser::first_divergence(a, dump(kStart));
-    CHECK(browser::known_difference(*stopped, "5.1")->heading ==
+    CHECK(errata::known_difference(*stopped, "5.1")->heading ==
           "The selection survives the removal of the selected shape (fixed, 5.1)");
 }
 
 TEST_CASE("every errata entry the table names is a heading of docs/errata.md", "[first_divergence_test]") {
     const std::string errata = readText(ERRATA_FILE);
     REQUIRE_FALSE(errata.empty());
-    for (const browser::KnownDifference& known : browser::known_differences()) {
+    for (const errata::KnownDifference& known : errata::known_differences()) {
         INFO(known.heading);
         CHECK_THAT(errata, Catch::Contains("\n### " + std::string(known.heading) + "\n"));
     }
-    CHECK(browser::heading_anchor("Circle inertia (fixed, 4.1 on)") == "circle-inertia-fixed-41-on");
-    CHECK(browser::heading_anchor("Out-of-bounds removal no longer skips the next shape's step (5.1)") ==
+    CHECK(errata::heading_anchor("Circle inertia (fixed, 4.1 on)") == "circle-inertia-fixed-41-on");
+    CHECK(errata::heading_anchor("Out-of-bounds removal no longer skips the next shape's step (5.1)") ==
           "out-of-bounds-removal-no-longer-skips-the-next-shapes-step-51");
+}
+
+TEST_CASE("an infinity is the same as itself only, never a finite number, however large the tolerance",
+          "[first_divergence_test]") {
+    // The book runner writes inf when the book's code overflows (issue 36: called equal).
+    const auto finite = dump(kStart + "1,0,rectangle,100,50.1,0,0,1,0\n" + kStep1Circle);
+    const auto overflowed = dump(kStart + "1,0,rectangle,100,inf,0,0,1,0\n" + kStep1Circle);
+    const auto below = dump(kStart + "1,0,rectangle,100,-inf,0,0,1,0\n" + kStep1Circle);
+    const browser::DumpTolerance loose{.absolute = 1e6, .relative = 1};
+    const auto found = browser::first_divergence(finite, overflowed, loose);
+    REQUIRE(found.has_value());
+    CHECK(found->field == "cy");
+    CHECK_THAT(browser::describe(*found, "a", "b", loose), !Catch::Contains("nan"));
+    // inf against itself is no divergence ("they differ by nan" once said it was).
+    CHECK_FALSE(browser::first_divergence(overflowed, overflowed).has_value());
+    REQUIRE(browser::first_divergence(overflowed, below).has_value());
+}
+
+TEST_CASE("a dump may hold columns first_divergence does not compare, in any place", "[first_divergence_test]") {
+    // A body's id, as a later stage's dump may add (the physics fields are what is compared).
+    std::istringstream with_id(
+        "step,id,index,shape,cx,cy,angle,vx,vy,angular_velocity\n"
+        "0,7,0,rectangle,100,50,0,0,0,0\n0,8,1,circle,300,60,0,6,0,0.5\n"
+        "1,7,0,rectangle,100,50.1,0,0,1,0\n1,8,1,circle,300.1,60,0.01,6,0,0.5\n");
+    const auto a = browser::parse_dump(with_id, "id.csv");
+    CHECK_FALSE(browser::first_divergence(a, dump(kStart + kStep1Box + kStep1Circle)).has_value());
+    std::istringstream missing("step,index,shape,cx,cy,angle,vx,vy\n");
+    CHECK_THROWS_WITH(browser::parse_dump(missing, "short.csv"), Catch::StartsWith("short.csv:1: not a state dump"));
 }

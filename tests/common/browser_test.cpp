@@ -314,56 +314,71 @@ TEST_CASE("browser: staging folders of runs that are gone are removed; a living 
 
 namespace {
 
-// A page whose every step, it says, works on `shapes` shapes at dt = 1/60 s.
-class CostlyScripts : public browser::PageScripts {
+// The cost a stage's world reports for `shapes` shapes, 15 passes over their pairs a
+// 1/60 s step, each pair holding `bytes` (the stages' page_world.cpp says this for itself).
+browser::WorldCost costOf(double shapes, double bytes = 100.0) {
+    const double pairs = shapes * (shapes - 1) / 2;
+    return {.step_work = 15 * pairs + shapes,
+            .bytes = pairs * bytes,
+            .objects = shapes,
+            .objects_word = "shapes",
+            .work_word = "pair tests",
+            .memory_word = "of contacts",
+            .lighter = "passes"};
+}
+
+class QuietScripts : public browser::PageScripts {
 public:
-    explicit CostlyScripts(std::size_t shapes) : shapes_(shapes) {}
     void onKeyDown(Key) override {}
     void onAnimationFrame() override {}
-    browser::StepCost stepCost() const override { return {.passes = 15, .shapes = shapes_, .draws_pairs = false}; }
-
-private:
-    std::size_t shapes_;
 };
 
 }  // namespace
 
-TEST_CASE("browser: the pair-test bound counts steps, sub-steps, passes and the pairs of every shape a press may add") {
-    browser::Options options = options_for("unused", 10, 0, "f*3");
+TEST_CASE("browser: the work bound counts the steps, each step's work and each frame's") {
+    browser::Options options = options_for("unused", 10, 0);
     options.frame_ms = 1000.0 / 60.0;
-    // 10 frames of one 1/60 s step each, plus the one the clock's rounding may add: 11
-    // steps; 7 + 3 shapes: 45 pairs, 15 passes each, and 10 moves.
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7, .draws_pairs = false}, options) ==
-          11.0 * (15 * 45 + 10));
-    // Sub-steps multiply it all; dt = 1/600 s runs ten steps a frame.
-    CHECK(browser::pair_test_bound({.dt_s = 1.0 / 600.0, .substeps = 4, .passes = 0, .shapes = 7, .draws_pairs = false},
-                                   options) == 101.0 * 4 * (45 + 10));
-    // A page that draws its collisions draws each pair once a frame, at kDrawnPairCost.
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 7}, options) ==
-          11.0 * (15 * 45 + 10) + 10 * 45 * browser::kDrawnPairCost);
-    // Only F and G add shapes: other presses cost nothing more.
-    browser::Options moves = options_for("unused", 10, 0, "d*100");
-    moves.frame_ms = 1000.0 / 60.0;
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 10, .draws_pairs = false}, moves) == 11.0 * (15 * 45 + 10));
+    // 10 frames of one 1/60 s step each, plus the one the clock's rounding may add: 11 steps.
+    CHECK(browser::work_bound({.step_work = 685}, options) == 11.0 * 685);
+    // dt = 1/600 s runs ten steps a frame.
+    CHECK(browser::work_bound({.step_s = 1.0 / 600.0, .step_work = 220}, options) == 101.0 * 220);
+    // A page that draws its world's work every frame.
+    CHECK(browser::work_bound({.step_work = 685, .frame_work = 45000}, options) == 11.0 * 685 + 10 * 45000);
+    // A page that says nothing costs nothing but its pixels.
+    CHECK(browser::work_bound({}, options) == 0);
 }
 
 TEST_CASE("browser: a run over its budget is refused with status 2 before anything is written") {
     ScratchFolder temp("browser_test");
     const fs::path out = temp.path / "out";
     struct Case {
-        std::size_t shapes;
+        browser::WorldCost cost;
         int frames;
         int width, height, scale;
         const char* says;
     };
     const Case cases[] = {
-        // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests.
-        {2500, 107, 40, 30, 1, "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests"},
+        // 2,500 shapes: 3.1e6 pairs, 15 passes, 108 steps: 5.05e9 pair tests, in the stage's words.
+        {costOf(2500), 107, 40, 30, 1,
+         "the run is too long: 107 frames of up to 2500 shapes may cost 5.06e+09 pair tests, more than the 5e+09 a "
+         "run may (fewer --frames, key presses, shapes, passes)"},
+        // A world that says nothing of what makes it cheaper, nor names its objects.
+        {{.step_work = 5e7},
+         100,
+         40,
+         30,
+         1,
+         "the run is too long: 100 frames of up to 0 objects may cost 5.05e+09 units of work, more than the 5e+09 a "
+         "run may (fewer --frames, key presses or objects)"},
+        // 785 shapes all in contact at 1,300 bytes a pair: 400.04 MB; one fewer fits (below).
+        {costOf(785, 1300), 1, 40, 30, 1,
+         "the run may need too much memory: up to 785 shapes may hold 400 MB of contacts, more than the 400 MB a run "
+         "may (fewer shapes or key presses that add them)"},
         // The page is the canvas and the 380 px panel beside it: (4096 + 380) x 2 wide.
-        {0, 1, 4096, 4096, 2, "the page is too large: 8952 x 8192 device pixels (the canvas and the 380 px panel"},
-        {0, 1, 3717, 4096, 1, "the page is too large: 4097 x 4096 device pixels"},
+        {{}, 1, 4096, 4096, 2, "the page is too large: 8952 x 8192 device pixels (the canvas and the 380 px panel"},
+        {{}, 1, 3717, 4096, 1, "the page is too large: 4097 x 4096 device pixels"},
         // A page of 4096 x 4096 px, 29,803 frames: 5.0e11 pixels drawn.
-        {0, 29803, 3716, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
+        {{}, 29803, 3716, 4096, 1, "the run is too long: 29803 frames of 1.68e+07 device pixels draw 5e+11 pixels"},
     };
     for (const Case& c : cases) {
         INFO(c.says);
@@ -371,32 +386,20 @@ TEST_CASE("browser: a run over its budget is refused with status 2 before anythi
         options.frame_ms = 1000.0 / 60.0;
         options.scale = c.scale;
         browser::Window window(options, browser::Document{browser::Canvas(c.width, c.height), ""});
-        CostlyScripts scripts(c.shapes);
+        QuietScripts scripts;
         const test::CapturedOutput captured;
-        const int status = browser::run(scripts, window, options);
+        const int status = browser::run(scripts, window, options, c.cost);
         const std::string err = captured.err();
         CHECK(status == 2);
         CHECK(is_one_line(err));
         CHECK_THAT(err, Catch::StartsWith(c.says));
         CHECK(fs::is_empty(temp.path));
     }
-    // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests (never run here).
+    // Inside the budget: 100 frames, 101 steps, 4.7e9 pair tests; 784 shapes, 399 MB (never run here).
     browser::Options inside = options_for(out, 100, 0);
     inside.frame_ms = 1000.0 / 60.0;
-    CHECK(browser::pair_test_bound({.passes = 15, .shapes = 2500, .draws_pairs = false}, inside) <=
-          browser::kMaxPairTests);
-}
-
-TEST_CASE("browser: the contact memory bound is every pair of the most shapes in contact") {
-    // 5.4's sequential impulses: 1,300 bytes a contact. 784 shapes: 306,936 pairs, 399.0 MB;
-    // 785: 307,720 pairs, 400.04 MB, past kMaxContactBytes.
-    const browser::Options none = options_for("unused", 1, 0);
-    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, none) == 306'936.0 * 1300);
-    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, none) <= browser::kMaxContactBytes);
-    CHECK(browser::contact_memory_bound({.shapes = 785, .bytes_a_contact = 1300}, none) > browser::kMaxContactBytes);
-    // An F or G press is one shape more, as in the pair-test bound.
-    const browser::Options one_more = options_for("unused", 1, 0, "g");
-    CHECK(browser::contact_memory_bound({.shapes = 784, .bytes_a_contact = 1300}, one_more) == 307'720.0 * 1300);
+    CHECK(browser::work_bound(costOf(2500), inside) <= browser::kMaxWork);
+    CHECK(costOf(784, 1300).bytes <= browser::kMaxWorldBytes);
 }
 
 TEST_CASE("browser: the encoding bound counts each saved page, its place on the sheet, and GIF frames at a tenth") {

@@ -16,6 +16,7 @@
 #include "contact_sheet.h"
 #include "near.h"
 #include "page.h"
+#include "text.h"
 
 using browser::Canvas;
 using browser::Color;

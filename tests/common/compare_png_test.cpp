@@ -49,6 +49,11 @@ Run compare(const test::ScratchFolder& folder, const std::string& arguments) {
     return run;
 }
 
+std::string textOf(const fs::path& file) {
+    std::ifstream in(file);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 bool isOneLine(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
 
 void checkTrouble(const test::ScratchFolder& folder, const std::string& arguments, const std::string& says) {
@@ -151,6 +156,50 @@ TEST_CASE("compare_png: --diff-dir removes an old diff picture only when it wrot
     std::ofstream(diffs / "b.png") << "the reader's\n";
     CHECK(compare(folder, quoted(b) + " " + quoted(b) + " --diff-dir " + quoted(diffs)).status == 0);
     CHECK(fs::exists(diffs / "b.png"));
+}
+
+TEST_CASE("compare_png: --diff-dir replaces no file it did not write, and writes nothing into a run's folder") {
+    const test::ScratchFolder folder("compare_png_diff_dir_own");
+    const fs::path a = folder.path / "final.png", b = folder.path / "b.png", diffs = folder.path / "dd";
+    browser::write_png(a, browser::Image(2, 2));
+    browser::Image other(2, 2);
+    other.set(0, 0, browser::Color{255, 0, 0, 255});
+    browser::write_png(b, other);
+    // A file of the reader's under the name of a diff picture (issue 36: it was replaced).
+    fs::create_directory(diffs);
+    std::ofstream(diffs / "final.png") << "mine\n";
+    checkTrouble(folder, quoted(a) + " " + quoted(b) + " --diff-dir " + quoted(diffs),
+                 "it holds a file compare_png did not write");
+    CHECK(textOf(diffs / "final.png") == "mine\n");
+    // A stage run's --out folder: its final.png is the run's, listed in its manifest.
+    const fs::path run = folder.path / "run";
+    fs::create_directory(run);
+    browser::write_png(run / "final.png", other);
+    std::ofstream(run / ".manifest") << "# The files a run wrote here.\nfinal.png\n";
+    checkTrouble(folder, quoted(a) + " " + quoted(b) + " --diff-dir " + quoted(run), "is another program's");
+    CHECK(browser::read_png(run / "final.png").rgba == other.rgba);
+    // Its own diff pictures it replaces, run after run.
+    const fs::path own = folder.path / "own";
+    for (int time = 0; time < 2; ++time) {
+        CHECK(compare(folder, quoted(a) + " " + quoted(b) + " --diff-dir " + quoted(own)).status == 1);
+    }
+    CHECK(fs::is_regular_file(own / "final.png"));
+}
+
+TEST_CASE("compare_png: the partial file of a diff is its own, never a file or a link already there") {
+    const test::ScratchFolder folder("compare_png_partial");
+    const fs::path a = folder.path / "a.png", b = folder.path / "b.png";
+    browser::write_png(a, browser::Image(2, 2));
+    browser::Image other(2, 2);
+    other.set(0, 0, browser::Color{255, 0, 0, 255});
+    browser::write_png(b, other);
+    // The name the partial file once had, beside the diff: a link to someone's file.
+    std::ofstream(folder.path / "victim.txt") << "someone's\n";
+    fs::create_symlink("victim.txt", folder.path / "diff.png.tmp");
+    CHECK(compare(folder, quoted(a) + " " + quoted(b) + " --diff " + quoted(folder.path / "diff.png")).status == 1);
+    CHECK(textOf(folder.path / "victim.txt") == "someone's\n");
+    CHECK(fs::is_symlink(folder.path / "diff.png.tmp"));
+    CHECK(browser::read_png(folder.path / "diff.png").width == 2);
 }
 
 TEST_CASE("compare_png: pictures match pixel for pixel by default, and a difference names its region") {

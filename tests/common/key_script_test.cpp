@@ -115,7 +115,7 @@ TEST_CASE("key_script: more presses in all than a run can afford are refused, ho
     const std::string script = "f*" + std::to_string(KeyScript::kMaxPresses - 1) + " g h@3";
     const std::string message = error_of(script);
     CHECK(message == "the script presses more than " + std::to_string(KeyScript::kMaxPresses) +
-                         " keys in all (each press may add a shape that every later step works on)");
+                         " keys in all (each press may add an object that every later step works on)");
     CHECK(KeyScript::parse("f*" + std::to_string(KeyScript::kMaxPresses - 1) + " g").pressCount() ==
           static_cast<std::size_t>(KeyScript::kMaxPresses));
 }

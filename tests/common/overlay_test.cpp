@@ -15,7 +15,7 @@
 
 using browser::Color;
 using browser::Key;
-using browser::Vec2;
+using lib::Vec2;
 
 namespace {
 

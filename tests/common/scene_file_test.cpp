@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,18 +16,37 @@
 #include "scratch_folder.h"
 
 namespace fs = std::filesystem;
-using browser::BodyDescription;
 using browser::SceneError;
-using browser::ShapeKind;
-using browser::Vec2;
-using browser::WorldKey;
+using browser::SceneKey;
+using lib::Vec2;
 
 namespace {
 
 using test::ScratchFolder;
 
-// A stage's world, as a stage would write it: the book's settings and, like the stages
-// beyond the book, a count and a word from a list, so every kind of WorldKey is read.
+// A stage's vocabulary, as a stage writes it in its scene_io.cpp: the book's settings
+// and, like the stages beyond the book, a count and a word from a list, so every kind of
+// SceneKey is read; bodies of two shapes, each with its own size keys.
+constexpr browser::NumberRule kTimeStep{[](double v) { return v >= 1e-5 && v <= 1.0; },
+                                        "must be a number in [1e-5, 1]"};
+constexpr browser::NumberRule kPassCount{[](double v) { return v >= 0.0 && v <= 1000.0 && std::floor(v) == v; },
+                                         "must be a whole number in [0, 1000]"};
+constexpr browser::NumberRule kPosition{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                        "must be a number in [-1e6, 1e6] (px)"};
+constexpr browser::NumberRule kSize{[](double v) { return v >= 0.01 && v <= 1e5; },
+                                    "must be a number in [0.01, 1e5] (px)"};
+constexpr browser::NumberRule kMass{[](double v) { return v == 0.0 || (v >= 1e-3 && v <= 1e6); },
+                                    "must be 0 (static) or a number in [1e-3, 1e6]"};
+constexpr browser::NumberRule kFriction{[](double v) { return v >= 0.0 && v <= 100.0; },
+                                        "must be a number in [0, 100]"};
+constexpr browser::NumberRule kAngle{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                     "must be a number in [-1e6, 1e6] (rad)"};
+constexpr browser::NumberRule kSpeed{[](double v) { return v >= -1e6 && v <= 1e6; },
+                                     "must be a number in [-1e6, 1e6] (px/s)"};
+constexpr browser::NumberRule kTurnRate{[](double v) { return v >= -1e4 && v <= 1e4; },
+                                        "must be a number in [-1e4, 1e4] (rad/s)"};
+constexpr std::size_t kMaxBodies = 2500;
+
 enum class Method { plain, fancy };
 struct WorldSettings {
     double width = 800.0;
@@ -42,20 +62,69 @@ struct WorldSettings {
     friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };
 
-std::vector<WorldKey> worldKeys(WorldSettings& world) {
+std::vector<SceneKey> worldKeys(WorldSettings& world) {
     namespace rules = browser::rules;
     return {
         {"width", world.width, rules::kCanvasSize},
         {"height", world.height, rules::kCanvasSize},
         {"gravity", world.gravity},
-        {"dt", world.dt, rules::kTimeStep},
-        {"relaxation_iterations", world.relaxation_iterations, rules::kPassCount},
+        {"dt", world.dt, kTimeStep},
+        {"relaxation_iterations", world.relaxation_iterations, kPassCount},
         {"correction_rate", world.correction_rate, rules::kFraction},
         {"movement", world.movement},
         {"positional_correction", world.positional_correction},
         {"remove_out_of_bounds", world.remove_out_of_bounds},
         {"method", world.method, {{"plain", Method::plain}, {"fancy", Method::fancy}}},
     };
+}
+
+enum class ShapeKind { rectangle, circle };
+struct BodyDescription {
+    ShapeKind shape = ShapeKind::rectangle;
+    Vec2 center;
+    double width = 0.0;
+    double height = 0.0;
+    double radius = 0.0;
+    double mass = 1.0;
+    double friction = 0.8;
+    double restitution = 0.2;
+    double angle = 0.0;
+    Vec2 velocity;
+    double angular_velocity = 0.0;
+    friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
+};
+
+std::vector<SceneKey> bodyKeys(BodyDescription& body) {
+    using browser::kRequired;
+    std::vector<SceneKey> keys{{"center", body.center, kPosition, kRequired}};
+    if (body.shape == ShapeKind::rectangle) {
+        keys.push_back({"width", body.width, kSize, kRequired});
+        keys.push_back({"height", body.height, kSize, kRequired});
+    } else {
+        keys.push_back({"radius", body.radius, kSize, kRequired});
+    }
+    keys.insert(keys.end(), {{"mass", body.mass, kMass},
+                             {"friction", body.friction, kFriction},
+                             {"restitution", body.restitution, browser::rules::kFraction},
+                             {"angle", body.angle, kAngle},
+                             {"velocity", body.velocity, kSpeed},
+                             {"angular_velocity", body.angular_velocity, kTurnRate}});
+    return keys;
+}
+
+// The "bodies" list, its elements going into `bodies`.
+browser::SceneList bodyList(std::vector<BodyDescription>& bodies) {
+    return {.name = "bodies",
+            .element = "body",
+            .kind_key = "shape",
+            .kinds = {"rectangle", "circle"},
+            .most = kMaxBodies,
+            .why_most = "every step tests every pair of them",
+            .add = [&bodies](std::size_t kind) {
+                BodyDescription& body = bodies.emplace_back();
+                body.shape = kind == 0 ? ShapeKind::rectangle : ShapeKind::circle;
+                return bodyKeys(body);
+            }};
 }
 
 // 5.1's defaults differ from WorldSettings{} in gravity, movement and out-of-bounds
@@ -70,7 +139,8 @@ struct Scene {
 // The scene in `file`, its world keys read into `defaults` as a stage reads them.
 Scene load_scene(const fs::path& file, const WorldSettings& defaults) {
     Scene scene{defaults, {}};
-    scene.bodies = browser::load_scene(file, worldKeys(scene.world));
+    const browser::SceneList bodies = bodyList(scene.bodies);
+    browser::load_scene(file, worldKeys(scene.world), {&bodies, 1});
     return scene;
 }
 
@@ -410,7 +480,7 @@ TEST_CASE("scene_file: nesting deeper than a scene can use is refused at the fir
     const fs::path file = folder.write(
         "deep.json", std::string(R"({"world": {"gravity": )").append(depth, '[').append(depth, ']').append("}}"));
     CHECK(refusal(file) == file.string() + R"(: world.gravity[0][0]: nested deeper than a scene can use (4 levels: )"
-                                           R"({"bodies": [{"center": [x, y]}]}))");
+                                           R"({"list": [{"key": [x, y]}]}))");
     // Four levels, as deep as a scene goes, are read (and refused for what they hold).
     const fs::path four = folder.write("four.json", R"({"world": {"gravity": [[1], 2]}})");
     CHECK(refusal(four) == four.string() + ": world.gravity[0]: must be a finite number (got [1])");
@@ -435,7 +505,7 @@ TEST_CASE("scene_file: a key a megabyte long is shown quoted and cut, and the pa
 TEST_CASE("scene_file: more bodies than a run can afford are refused") {
     ScratchFolder folder("many");
     std::string text = R"({"bodies": [)";
-    for (std::size_t i = 0; i <= browser::kMaxBodies; ++i) {
+    for (std::size_t i = 0; i <= kMaxBodies; ++i) {
         text.append(i == 0 ? "" : ",").append(R"({"shape": "circle", "center": [0, 0], "radius": 1})");
     }
     const fs::path file = folder.write("many.json", text + "]}");
@@ -485,10 +555,13 @@ TEST_CASE("scene_file: a key the stage does not list is refused, naming the keys
     CHECK_THAT(refusal(file), Catch::StartsWith(file.string() + ": world.broad_phase: unknown key; this stage's "
                                                                 "world takes width, height, gravity, dt, "));
     // A stage that reads no world key at all refuses every one.
-    std::vector<WorldKey> none;
-    CHECK_THROWS_WITH(browser::load_scene(folder.write("dt.json", R"({"world": {"dt": 0.01}})"), none),
+    std::vector<SceneKey> none;
+    CHECK_THROWS_WITH(browser::load_scene(folder.write("dt.json", R"({"world": {"dt": 0.01}})"), none, {}),
                       Catch::Contains("world.dt: unknown key"));
-    CHECK(browser::load_scene(folder.write("empty.json", R"({"world": {}})"), none).empty());
+    CHECK_NOTHROW(browser::load_scene(folder.write("empty.json", R"({"world": {}})"), none, {}));
+    // A stage with no lists refuses bodies as any other unknown part of a scene.
+    CHECK_THROWS_WITH(browser::load_scene(folder.write("bodies.json", R"({"bodies": []})"), none, {}),
+                      Catch::Contains("bodies: unknown key; a scene takes world"));
 }
 
 TEST_CASE("scene_file: a refused file leaves every setting as it was") {
@@ -497,6 +570,87 @@ TEST_CASE("scene_file: a refused file leaves every setting as it was") {
     const fs::path file = folder.write("scene.json", R"({"world": {"gravity": [0, 99], "method": "fancy"},
         "bodies": [{"shape": "circle", "center": [0, 0], "radius": -1}]})");
     WorldSettings world = kDemoDefaults;
-    CHECK_THROWS_AS(browser::load_scene(file, worldKeys(world)), SceneError);
+    std::vector<BodyDescription> read;
+    const browser::SceneList bodies = bodyList(read);
+    CHECK_THROWS_AS(browser::load_scene(file, worldKeys(world), {&bodies, 1}), SceneError);
     CHECK(world == kDemoDefaults);
+}
+
+TEST_CASE("scene_file: the lists, their kinds and their keys are the stage's own words") {
+    // A vocabulary the browser has never heard of reads as the bodies do: nothing in the
+    // reader knows a shape, a body or its keys.
+    struct Spring {
+        bool soft = false;
+        double stiffness = 1.0;
+        Vec2 anchor;
+    };
+    std::vector<Spring> springs;
+    const browser::SceneList list{
+        .name = "springs",
+        .element = "spring",
+        .kind_key = "type",
+        .kinds = {"hard", "soft"},
+        .most = 2,
+        .why_most = "two are plenty",
+        .add = [&springs](std::size_t kind) {
+            Spring& spring = springs.emplace_back();
+            spring.soft = kind == 1;
+            std::vector<SceneKey> keys{{"anchor", spring.anchor, browser::rules::kFinite, browser::kRequired}};
+            if (spring.soft) keys.push_back({"stiffness", spring.stiffness});
+            return keys;
+        }};
+    ScratchFolder folder("springs");
+    const auto read = [&](const std::string& text) {
+        springs.clear();
+        try {
+            browser::read_scene_text(text, "s.json", {}, {&list, 1});
+        } catch (const SceneError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    CHECK(
+        read(R"({"springs": [{"type": "soft", "anchor": [1, 2], "stiffness": 3}, {"type": "hard", "anchor": [0, 0]}]})")
+            .empty());
+    REQUIRE(springs.size() == 2);
+    CHECK(springs[0].soft);
+    CHECK(springs[0].stiffness == 3);
+    CHECK(springs[0].anchor == Vec2{1, 2});
+    CHECK_FALSE(springs[1].soft);
+    CHECK(read(R"({"springs": [{"anchor": [0, 0]}]})") ==
+          R"(s.json: springs[0].type: missing; every spring needs "type": "hard" or "soft")");
+    CHECK(read(R"({"springs": [{"type": "hard", "anchor": [0, 0], "stiffness": 3}]})") ==
+          "s.json: springs[0].stiffness: unknown key; a hard spring takes type, anchor");
+    CHECK(read(R"({"springs": [{"type": "soft"}]})") ==
+          "s.json: springs[0].anchor: missing; a soft spring needs type, anchor");
+    CHECK(read(R"({"springs": [{"type": "hard", "anchor": [0, 0]}, {"type": "hard", "anchor": [0, 0]},
+                   {"type": "hard", "anchor": [0, 0]}]})") ==
+          "s.json: springs: more than 2 springs (got 3); two are plenty");
+    CHECK(read(R"({"bodies": []})") == "s.json: bodies: unknown key; a scene takes world, springs");
+}
+
+TEST_CASE("scene_file: a key described for a reference table: its values, and its setting's value now") {
+    WorldSettings world = kDemoDefaults;
+    const std::vector<SceneKey> keys = worldKeys(world);
+    const auto described = [&](std::string_view name) {
+        for (const SceneKey& key : keys) {
+            if (key.name() == name) return browser::describe(key);
+        }
+        FAIL("no key " << name);
+        return browser::KeyDescription{};
+    };
+    CHECK(described("dt").values == "a number in [1e-5, 1]");
+    CHECK(described("dt").value_now == "0.016666666666666666");
+    CHECK(described("gravity").values == "[x, y], each a finite number");
+    CHECK(described("gravity").value_now == "[0, 20]");
+    CHECK(described("relaxation_iterations").value_now == "15");
+    CHECK(described("movement").values == "true or false");
+    CHECK(described("movement").value_now == "true");
+    CHECK(described("method").values == R"("plain" or "fancy")");
+    CHECK(described("method").value_now == R"("plain")");
+    world.method = Method::fancy;
+    CHECK(described("method").value_now == R"("fancy")");
+    CHECK_FALSE(described("dt").required);
+    BodyDescription body{.shape = ShapeKind::circle};
+    CHECK(browser::describe(bodyKeys(body).front()).required);
 }

@@ -22,7 +22,7 @@
 namespace fs = std::filesystem;
 using browser::FileError;
 using browser::StateDump;
-using browser::Vec2;
+using lib::Vec2;
 
 namespace {
 
@@ -184,10 +184,12 @@ TEST_CASE("state_dump: a file that cannot be created throws a one-line FileError
     CHECK(folder.files().empty());
 }
 
-TEST_CASE("state_dump: a shape name other than rectangle or circle is refused") {
+TEST_CASE("state_dump: a kind that is not a plain word is refused") {
     ScratchFolder folder("shape");
     StateDump dump(folder.path / "dump.csv");
-    CHECK_THROWS_AS(dump.row(0, 0, "triangle", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
+    CHECK_NOTHROW(dump.row(0, 0, "triangle", {0, 0}, 0, {0, 0}, 0));  // the stage's words are the stage's
+    CHECK_THROWS_AS(dump.row(0, 0, "Triangle", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
+    CHECK_THROWS_AS(dump.row(0, 0, "", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
     CHECK_THROWS_AS(dump.row(0, 0, "circle,1", {0, 0}, 0, {0, 0}, 0), std::invalid_argument);
 }
 

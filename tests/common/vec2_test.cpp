@@ -6,8 +6,8 @@
 
 #include "vec2.h"
 
-using browser::Vec2;
 using Catch::Matchers::WithinAbs;
+using lib::Vec2;
 
 namespace {
 constexpr double kPi = std::numbers::pi;

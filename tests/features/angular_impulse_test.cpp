@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <source_location>
 #include <numbers>
 
 #include "circle.h"
+#include "expect.h"
 #include "near.h"
 #include "rectangle.h"
 #include "world_fixture.h"
@@ -32,7 +34,11 @@ engine::WorldSettings world(bool positional_correction, Vec2 gravity = kNoGravit
     return settings;
 }
 
-void requireConserved(double before, double after) { CHECK(after == Approx(before).epsilon(1e-9)); }
+void requireConserved(double before, double after, std::source_location where = std::source_location::current()) {
+    test::checkedAt(where, "the angular momentum about a fixed point after the step: as before (conserved)",
+                    after == Approx(before).epsilon(1e-9),
+                    "expected " + test::shown(before) + " (to 1e-9 of it), got " + test::shown(after));
+}
 
 // A ball of radius 10 and mass 3 (mu 0.5, e 0) sliding onto a static floor at (30, 60)
 // px/s, 1 px deep already, not turning; one step of the world later.
@@ -71,18 +77,22 @@ TEST_CASE("angular impulse: an off-centre hit sets a free box spinning; both mom
     // along n: it gets no spin. With 1/I = 12 / (2 (40^2 + 20^2)) = 0.003:
     //   jN = (1 + e) 50 / (1/2 + 1/1 + 5^2 0.003) = 75 / 1.575
     const double jN = 75 / 1.575;
-    CHECK(box.velocity().x == Approx(-jN / 2).epsilon(1e-12));
-    CHECK(ball.velocity().x == Approx(-50 + jN).epsilon(1e-12));
+    test::expectEqual("the box's vx after the off-centre hit, px/s: -jN / m, jN = (1 + e) 50 / (1/2 + 1/1 + 5^2 0.003)",
+                      Approx(-jN / 2).epsilon(1e-12), box.velocity().x);
+    test::expectEqual("the ball's vx after the hit, px/s: -50 + jN / m", Approx(-50 + jN).epsilon(1e-12),
+                      ball.velocity().x);
     // The box turns the other way from the clock on screen: w = -(rA x n) jN / I.
-    CHECK(box.angularVelocity() == Approx(-5 * jN * 0.003).epsilon(1e-12));
-    CHECK(ball.angularVelocity() == 0);
+    test::expectEqual("the box's angular velocity after the hit, rad/s: -(rA x n) jN / I",
+                      Approx(-5 * jN * 0.003).epsilon(1e-12), box.angularVelocity());
+    test::expectEqual("the ball's angular velocity, rad/s: its arm lies along the normal", 0, ball.angularVelocity());
 
     const Vec2 after = test::linearMomentum(page.core);
-    CHECK(after.x == Approx(momentum.x).epsilon(1e-9));
+    test::expectEqual("the shapes' momentum along x after the hit, mass px/s: as before (conserved)",
+                      Approx(momentum.x).epsilon(1e-9), after.x);
     CHECK_THAT(after.y, test::near(momentum.y, 1e-9 * momentum.length()));
     requireConserved(spin_momentum, test::angularMomentum(page.core, about));
     page.steps(60);  // apart now: free flight keeps both
-    CHECK(page.core.physics().collisions().empty());
+    test::expectEqual("the pair apart 60 steps later, in free flight", true, page.core.physics().collisions().empty());
     requireConserved(spin_momentum, test::angularMomentum(page.core, about));
 }
 
@@ -108,12 +118,15 @@ TEST_CASE("angular impulse: oblique hits with friction keep both momenta") {
         page.steps(1);
         collided += static_cast<int>(page.core.physics().collisions().size());
     }
-    REQUIRE(collided > 0);
+    if (!test::expectAbove("collisions in 60 steps: the shapes did hit", 0, collided)) return;
     const Vec2 after = test::linearMomentum(page.core);
-    CHECK(after.x == Approx(momentum.x).epsilon(1e-9));
-    CHECK(after.y == Approx(momentum.y).epsilon(1e-9));
+    test::expectEqual("the shapes' momentum along x after the hits, mass px/s: as before (conserved)",
+                      Approx(momentum.x).epsilon(1e-9), after.x);
+    test::expectEqual("the shapes' momentum along y after the hits, mass px/s: as before (conserved)",
+                      Approx(momentum.y).epsilon(1e-9), after.y);
     requireConserved(spin_momentum, test::angularMomentum(page.core, about));
-    CHECK(box.angularVelocity() != 0.5);
+    test::expectEqual("the box's angular velocity changed by the hits (from 0.5 rad/s)", true,
+                      box.angularVelocity() != 0.5);
 }
 
 TEST_CASE("angular impulse: a ball sliding onto a floor spins up as a solid disc would (inertia fix)") {
@@ -131,7 +144,8 @@ TEST_CASE("angular impulse: a ball sliding onto a floor spins up as a solid disc
     CHECK_THAT(ball.velocity().x, test::near(25, kHandWorked));
     CHECK_THAT(ball.velocity().y, test::near(0, kHandWorked));
     CHECK_THAT(ball.angularVelocity(), test::near(1, kHandWorked));
-    CHECK(ball.invInertia() == Approx(2.0 / (3 * 100)).epsilon(1e-15));
+    test::expectEqual("the ball's inverse inertia 1/I: a solid disc, 2 / (m r^2)",
+                      Approx(2.0 / (3 * 100)).epsilon(1e-15), ball.invInertia());
 }
 
 TEST_CASE("angular impulse: lever arms reach from the corrected centre to the uncorrected contact (kept)") {
@@ -145,7 +159,9 @@ TEST_CASE("angular impulse: lever arms reach from the corrected centre to the un
     const double jT = 15 / (1.0 / 3 + arm * arm * 2 / 300);
     CHECK_THAT(ball.velocity().x, test::near(30 - jT / 3, kHandWorked));
     CHECK_THAT(ball.angularVelocity(), test::near(arm * jT * 2 / 300, kHandWorked));
-    CHECK(std::abs(ball.angularVelocity() - 1) > 0.02);  // measurably not the exact arm's 1 rad/s
+    // measurably not the exact arm's 1 rad/s
+    test::expectAbove("|w - 1 rad/s|: measurably not the exact arm's 1 rad/s (the arm reaches the uncorrected contact)",
+                      0.02, std::abs(ball.angularVelocity() - 1));
 }
 
 TEST_CASE("angular impulse: friction uses the slide from before the normal impulse (kept)") {
@@ -176,8 +192,9 @@ TEST_CASE("angular impulse: friction uses the slide from before the normal impul
     // which would have called for a much larger friction impulse.
     const double slide_after = 20 - w_after_normal * arm.y;
     const double jT_after = (1 + e) * slide_after * mu / response;
-    CHECK(slide_after > 40);
-    CHECK(std::abs(box.velocity().x - (20 - jT_after)) > 5);
+    test::expectAbove("the corner's sliding speed after the normal impulse, px/s", 40, slide_after);
+    test::expectAbove("how far the box's vx is from the friction the later slide would call for, px/s", 5,
+                      std::abs(box.velocity().x - (20 - jT_after)));
 }
 
 TEST_CASE("angular impulse: a disc rolls down a slope at 2/3 g sin(slope), making no energy") {
@@ -214,11 +231,15 @@ TEST_CASE("angular impulse: a disc rolls down a slope at 2/3 g sin(slope), makin
     }
     const double speed_at_3s = ball.velocity().dot(downhill);
     const double acceleration = (speed_at_3s - speed_at_1s) / 2;
-    CHECK(acceleration == Approx(2.0 / 3 * kGravity * std::sin(kSlope)).epsilon(0.01));
-    CHECK(ball.angularVelocity() * kRadius == Approx(speed_at_3s).epsilon(0.01));  // rolling, not sliding
+    test::expectEqual("the rolling disc's acceleration down the slope, px/s^2: 2/3 g sin(slope)",
+                      Approx(2.0 / 3 * kGravity * std::sin(kSlope)).epsilon(0.01), acceleration);
+    // rolling, not sliding
+    test::expectEqual("w r at 3 s, px/s: the speed down the slope (rolling, not sliding)",
+                      Approx(speed_at_3s).epsilon(0.01), ball.angularVelocity() * kRadius);
     // Energy made would be a bug; the passes' small position fixes may shift a little.
     const double height_lost = (ball.center() - start).dot(downhill) * std::sin(kSlope);
-    CHECK(most_gained <= 1e-3 * kMass * kGravity * height_lost);
+    test::expectAtMost("the most energy gained while rolling: at most 1e-3 of the energy released",
+                       1e-3 * kMass * kGravity * height_lost, most_gained);
     WARN("rolling disc: " << acceleration << " px/s^2 (2/3 g sin a = " << 2.0 / 3 * kGravity * std::sin(kSlope)
                           << "), most energy gained " << most_gained << " of " << kMass * kGravity * height_lost
                           << " released");
@@ -238,8 +259,11 @@ TEST_CASE("angular impulse: a resting box rocks a little and never quite settles
         turn = std::max(turn, std::abs(box.angle()));
         spin = std::max(spin, std::abs(box.angularVelocity()));
     }
-    CHECK(turn < 1e-3);  // rad: a twentieth of a degree, invisible
-    CHECK(spin > 1e-6);  // rad/s: still rocking after 150 s
+    // rad: a twentieth of a degree, invisible
+    test::expectBelow("the resting box's largest |angle| over 1,000 steps, rad: below a twentieth of a degree", 1e-3,
+                      turn);
+    // rad/s: still rocking after 150 s
+    test::expectAbove("the resting box's largest |angular velocity|, rad/s: still rocking after 150 s", 1e-6, spin);
     WARN("resting box after 150 s: angle up to " << turn << " rad, angular velocity up to " << spin << " rad/s");
 }
 

@@ -24,10 +24,10 @@
 namespace broad_phase_choice_test {
 
 namespace fs = std::filesystem;
-using browser::BodyDescription;
 using browser::Key;
-using browser::ShapeKind;
+using engine::BodyDescription;
 using engine::BroadPhaseKind;
+using engine::ShapeType;
 using engine::Vec2;
 using engine::WorldSettings;
 
@@ -82,19 +82,19 @@ engine::Scene loadScene(const std::string& name) { return engine::loadScene(kLib
 std::vector<BodyDescription> randomBodies(std::uint64_t seed, int count) {
     test::RandomShapes random(seed);
     std::vector<BodyDescription> bodies;
-    bodies.push_back({.shape = ShapeKind::rectangle, .center = {400, 440}, .width = 800, .height = 20, .mass = 0});
+    bodies.push_back({.shape = ShapeType::Rectangle, .center = {400, 440}, .width = 800, .height = 20, .mass = 0});
     constexpr double kSmallest = 2.0;
     constexpr double kLargest = 200.0;
     for (int i = 0; i < count; ++i) {
         BodyDescription body;
         body.center = {random.uniform(0, 800), random.uniform(0, 430)};
         if (random.uniform(0, 1) < 0.5) {
-            body.shape = ShapeKind::rectangle;
+            body.shape = ShapeType::Rectangle;
             body.width = random.logUniform(kSmallest, kLargest);
             body.height = random.logUniform(kSmallest, kLargest);
             body.angle = random.anyAngle();
         } else {
-            body.shape = ShapeKind::circle;
+            body.shape = ShapeType::Circle;
             body.radius = random.logUniform(kSmallest, kLargest) / 2;
         }
         const bool peg = random.uniform(0, 1) < 0.1;
@@ -306,12 +306,12 @@ TEST_CASE("broad phase choice: the broad phases agree on shapes far out, where t
     world.gravity = {0, 0};
     std::vector<BodyDescription> bodies;
     for (int i = 0; i < 10; ++i) {
-        bodies.push_back({.shape = ShapeKind::circle, .center = {100.0 + 15 * i, 200.0 + 3 * i}, .radius = 10});
+        bodies.push_back({.shape = ShapeType::Circle, .center = {100.0 + 15 * i, 200.0 + 3 * i}, .radius = 10});
     }
     const std::vector<double> far_out{1e9, -1e9, 4e10, -4e10, 1e15};
     for (double far : far_out) {
-        bodies.push_back({.shape = ShapeKind::circle, .center = {far, far}, .radius = 10});
-        bodies.push_back({.shape = ShapeKind::circle, .center = {far + 16, far}, .radius = 10});
+        bodies.push_back({.shape = ShapeType::Circle, .center = {far, far}, .radius = 10});
+        bodies.push_back({.shape = ShapeType::Circle, .center = {far + 16, far}, .radius = 10});
     }
     ThreeWorlds worlds(world);
     worlds.build(bodies);
@@ -344,9 +344,9 @@ TEST_CASE("broad phase choice: the grid gathers a row again when the pass pushes
     std::vector<BodyDescription> bodies;
     for (int k = 0; k < kCopies; ++k) {
         const Vec2 at{100.0 + 300 * (k % 8), 100.0 + 300 * (k / 8)};
-        bodies.push_back({.shape = ShapeKind::circle, .center = at, .radius = 5});
-        bodies.push_back({.shape = ShapeKind::circle, .center = at + Vec2{-25, 0}, .radius = 50, .mass = 1000});
-        bodies.push_back({.shape = ShapeKind::circle, .center = at + Vec2{32, 0}, .radius = 5});
+        bodies.push_back({.shape = ShapeType::Circle, .center = at, .radius = 5});
+        bodies.push_back({.shape = ShapeType::Circle, .center = at + Vec2{-25, 0}, .radius = 50, .mass = 1000});
+        bodies.push_back({.shape = ShapeType::Circle, .center = at + Vec2{32, 0}, .radius = 5});
     }
     ThreeWorlds worlds(world);
     worlds.build(bodies);
@@ -375,7 +375,7 @@ TEST_CASE("broad phase choice: the grid hands on far fewer pairs than testing th
         body.center = {20 + 20.0 * (i % kSide) + random.uniform(-3, 3),
                        20 + 20.0 * (i / kSide) + random.uniform(-3, 3)};
         if (i % 2 == 0) {
-            body.shape = ShapeKind::circle;
+            body.shape = ShapeType::Circle;
             body.radius = random.uniform(4, 7);
         } else {
             body.width = random.uniform(8, 14);

@@ -9,6 +9,7 @@
 
 #include "circle.h"
 #include "collision_oracle.h"
+#include "expect.h"
 #include "random_scene.h"
 #include "rectangle.h"
 
@@ -54,31 +55,36 @@ constexpr int kShapesPerScene = 100;
 }  // namespace
 
 TEST_CASE("broad phase: a circle is its own bounding circle, a rectangle's reaches its corners") {
-    CHECK(engine::Circle({10, 20}, 7).boundRadius() == 7);
+    test::expectEqual("a circle's bound radius, px: its radius", 7, engine::Circle({10, 20}, 7).boundRadius());
     // A 6 x 8 rectangle's diagonal is 10 (3-4-5 triangle doubled): radius 5.
     engine::Rectangle box({0, 0}, 6, 8);
-    CHECK(box.boundRadius() == 5);
+    test::expectEqual("a 6 x 8 rectangle's bound radius, px: half its diagonal", 5, box.boundRadius());
     box.rotate(0.7);  // turning moves the corners round the same circle
-    CHECK(box.boundRadius() == 5);
-    CHECK(engine::Rectangle({0, 0}, 2, 2).boundRadius() == Approx(std::sqrt(2.0)).epsilon(1e-15));
+    test::expectEqual("the same rectangle's bound radius turned by 0.7 rad, px", 5, box.boundRadius());
+    test::expectEqual("a 2 x 2 square's bound radius, px: sqrt(2)", Approx(std::sqrt(2.0)).epsilon(1e-15),
+                      engine::Rectangle({0, 0}, 2, 2).boundRadius());
 }
 
 TEST_CASE("broad phase: bounding circles apart, exactly touching and overlapping") {
     const engine::Circle a({0, 0}, 3);
     // Centres 5 apart (a 3-4-5 triangle), radii 3 + 2 = 5: touching counts as overlap.
     const engine::Circle touching({3, 4}, 2);
-    CHECK(a.boundTest(touching));
-    CHECK(touching.boundTest(a));
+    test::expectEqual("boundTest of circles whose bounds just touch (centres 5 apart, radii 3 + 2): touching counts",
+                      true, a.boundTest(touching));
+    test::expectEqual("the same, asked the other way round", true, touching.boundTest(a));
     const engine::Circle apart({6, 8}, 2);  // 10 apart, 5 needed
-    CHECK_FALSE(a.boundTest(apart));
-    CHECK_FALSE(apart.boundTest(a));
+    test::expectEqual("boundTest of circles 10 apart with radii 3 + 2: apart", false, a.boundTest(apart));
+    test::expectEqual("the same, asked the other way round", false, apart.boundTest(a));
     const engine::Circle overlapping({1, 1}, 2);
-    CHECK(a.boundTest(overlapping));
+    test::expectEqual("boundTest of overlapping circles", true, a.boundTest(overlapping));
     // A 6 x 8 rectangle (bound radius 5) 10 from a circle of radius 5: touching bounds.
     const engine::Rectangle box({20, 0}, 6, 8);
-    CHECK(box.boundTest(engine::Circle({10, 0}, 5)));
-    CHECK_FALSE(box.boundTest(engine::Circle({10, 0}, 4.5)));
-    CHECK(box.boundTest(box));  // a shape always overlaps itself
+    test::expectEqual("boundTest of a 6 x 8 rectangle (bound radius 5) and a circle of radius 5, 10 apart: touching",
+                      true, box.boundTest(engine::Circle({10, 0}, 5)));
+    test::expectEqual("boundTest of the rectangle and a circle of radius 4.5, 10 apart: apart", false,
+                      box.boundTest(engine::Circle({10, 0}, 4.5)));
+    // a shape always overlaps itself
+    test::expectEqual("boundTest of a shape with itself", true, box.boundTest(box));
 }
 
 TEST_CASE("broad phase: a turned rectangle and a circle 1 px apart still pass (Figure 3-5)") {
@@ -90,9 +96,10 @@ TEST_CASE("broad phase: a turned rectangle and a circle 1 px apart still pass (F
     const Vec2 normal = Vec2{1, -1} * (1 / std::sqrt(2.0));
     const engine::Circle ball(Vec2{200, 200} + normal * 16, 10);
     // Bounds: 10 + sqrt(40^2 + 10^2) / 2 = 30.6 > 16 between the centres.
-    CHECK(box.boundTest(ball));
+    test::expectEqual("boundTest of the turned rectangle and the circle 1 px from it: the bounds overlap", true,
+                      box.boundTest(ball));
     const double exact = oracle::depth(oracle::Box{{200, 200}, 40, 10, kPi / 4}, oracle::Disc{ball.center(), 10});
-    CHECK(exact == Approx(-1).epsilon(1e-12));
+    test::expectEqual("the oracle's depth of the pair, px: a 1 px gap", Approx(-1).epsilon(1e-12), exact);
 }
 
 TEST_CASE("broad phase: agrees with bounding circles worked out here, on 20,000 random pairs") {
@@ -109,9 +116,10 @@ TEST_CASE("broad phase: agrees with bounding circles worked out here, on 20,000 
             continue;
         }
         INFO("pair " << k << ", gap between the bounding circles " << gap);
-        CHECK(test::build(a)->boundTest(*test::build(b)) == (gap < 0));
+        test::expectEqual("boundTest's verdict: overlap when the gap between the bounding circles is below 0",
+                          (gap < 0), test::build(a)->boundTest(*test::build(b)));
     }
-    CHECK(borderline < 10);
+    test::expectBelow("random pairs too close to call, of 20,000", 10, borderline);
 }
 
 TEST_CASE("broad phase: never misses a touching pair; its false-positive share, printed") {
@@ -136,8 +144,8 @@ TEST_CASE("broad phase: never misses a touching pair; its false-positive share, 
         countPairs(mixed_sizes, mixed);
     }
     for (const BroadPhaseCount* count : {&spawned, &mixed}) {
-        CHECK(count->missed == 0);
-        REQUIRE(count->bound_overlaps > 0);
+        test::expectEqual("colliding pairs the broad phase missed", 0, count->missed);
+        if (!test::expectAbove("pairs whose bounds overlap, in the random scenes", 0, count->bound_overlaps)) return;
         WARN((count == &spawned ? "F/G-like scenes" : "mixed-size scenes")
              << ": " << count->pairs << " pairs, the broad phase passes " << count->bound_overlaps << ", of which "
              << count->false_positives << " do not touch: false-positive share " << 100.0 * count->falsePositiveShare()

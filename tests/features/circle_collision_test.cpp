@@ -5,6 +5,7 @@
 #include "circle.h"
 #include "collision_checks.h"
 #include "collision_info.h"
+#include "expect.h"
 #include "physics.h"
 
 namespace circle_collision_test {
@@ -78,9 +79,9 @@ TEST_CASE("circle collision: circles with the same centre part straight up by bo
 TEST_CASE("circle collision: 20,000 random pairs agree with the oracle") {
     const test::VerdictCount count = test::checkRandomPairs(32, 10'000, false, false);
     INFO("overlapping " << count.overlap << ", apart " << count.apart << ", borderline " << count.borderline);
-    CHECK(count.overlap > 2'000);
-    CHECK(count.apart > 2'000);
-    CHECK(count.borderline < 10);
+    test::expectAtLeast("random pairs that overlap, of 20,000", 2'001, count.overlap);
+    test::expectAtLeast("random pairs that are apart, of 20,000", 2'001, count.apart);
+    test::expectAtMost("random pairs too close to call, of 20,000", 9, count.borderline);
 }
 
 TEST_CASE("circle collision: for two circles the broad phase is already exact") {
@@ -88,7 +89,9 @@ TEST_CASE("circle collision: for two circles the broad phase is already exact") 
     for (int k = 0; k < 10'000; ++k) {
         const auto [a, b] = random.nearbyPair(false, false);
         const auto first = test::build(a), second = test::build(b);
-        CHECK(first->boundTest(*second) == first->collisionTest(*second).has_value());
+        INFO("circles " << Catch::Detail::stringify(*first) << " and " << Catch::Detail::stringify(*second));
+        test::expectEqual("the circle-circle test's verdict (collided or not): the bounding circles' (boundTest)",
+                          first->boundTest(*second), first->collisionTest(*second).has_value());
     }
 }
 

@@ -9,6 +9,7 @@
 #include "book_scene.h"
 #include "circle.h"
 #include "closed_box.h"
+#include "expect.h"
 #include "my_game.h"
 #include "near.h"
 #include "rectangle.h"
@@ -43,7 +44,8 @@ struct HeadOn {
 };
 
 void requireConserved(Vec2 before, Vec2 after) {
-    CHECK(after.x == Approx(before.x).epsilon(1e-9));
+    test::expectEqual("the pair's momentum along x after the step, mass px/s: as before (m v conserved)",
+                      Approx(before.x).epsilon(1e-9), after.x);
     // Rounding: 1e-9 of the momentum.
     CHECK_THAT(after.y, test::near(before.y, 1e-9 * before.length()));
 }
@@ -54,13 +56,17 @@ TEST_CASE("collision impulse: equal circles, e = 1: they swap velocities, moment
     HeadOn pair(2, 2, 1.0, {60, 0}, {-20, 0});
     const Vec2 momentum = test::linearMomentum(pair.page.core);  // 2 * 60 - 2 * 20 = 80
     pair.page.steps(1);
-    CHECK(pair.a.velocity().x == Approx(-20).epsilon(1e-12));
-    CHECK(pair.b.velocity().x == Approx(60).epsilon(1e-12));
-    CHECK(pair.a.velocity().y == 0);
+    test::expectEqual("circle a's vx after the head-on hit, px/s: equal masses, e = 1, they swap (b's -20)",
+                      Approx(-20).epsilon(1e-12), pair.a.velocity().x);
+    test::expectEqual("circle b's vx after the head-on hit, px/s: a's 60", Approx(60).epsilon(1e-12),
+                      pair.b.velocity().x);
+    test::expectEqual("circle a's vy, px/s: the hit is along x", 0, pair.a.velocity().y);
     requireConserved(momentum, test::linearMomentum(pair.page.core));
     pair.page.steps(30);  // they fly apart, untouched
-    CHECK(pair.a.velocity().x == Approx(-20).epsilon(1e-12));
-    CHECK(pair.b.center().x - pair.a.center().x > 20);
+    test::expectEqual("circle a's vx 30 steps later, px/s: flying apart, untouched", Approx(-20).epsilon(1e-12),
+                      pair.a.velocity().x);
+    test::expectAbove("the distance between the centres 30 steps later, px: above the radii's 20, apart", 20,
+                      pair.b.center().x - pair.a.center().x);
 }
 
 TEST_CASE("collision impulse: equal circles, e = 0: they go on together, momentum is kept") {
@@ -69,8 +75,10 @@ TEST_CASE("collision impulse: equal circles, e = 0: they go on together, momentu
     HeadOn pair(2, 2, 0.0, {60, 0}, {-20, 0});
     const Vec2 momentum = test::linearMomentum(pair.page.core);
     pair.page.steps(1);
-    CHECK(pair.a.velocity().x == Approx(20).epsilon(1e-12));
-    CHECK(pair.b.velocity().x == Approx(20).epsilon(1e-12));
+    test::expectEqual(
+        "circle a's vx after the hit, px/s: e = 0, both at the centre-of-mass velocity (2 x 60 - 2 x 20) / 4",
+        Approx(20).epsilon(1e-12), pair.a.velocity().x);
+    test::expectEqual("circle b's vx after the hit, px/s: the same 20", Approx(20).epsilon(1e-12), pair.b.velocity().x);
     requireConserved(momentum, test::linearMomentum(pair.page.core));
     pair.page.steps(30);
     // Touching, side by side: the passes left 1 px * 0.2^15 = 3e-11 px of overlap.
@@ -112,8 +120,12 @@ TEST_CASE("collision impulse: a 1:1000 mass ratio follows the one-dimensional co
         HeadOn pair(ma, mb, e, {va, 0}, {vb, 0});
         const Vec2 momentum = test::linearMomentum(pair.page.core);
         pair.page.steps(1);
-        CHECK(pair.a.velocity().x == Approx(((ma - e * mb) * va + (1 + e) * mb * vb) / (ma + mb)).epsilon(1e-12));
-        CHECK(pair.b.velocity().x == Approx(((mb - e * ma) * vb + (1 + e) * ma * va) / (ma + mb)).epsilon(1e-12));
+        test::expectEqual("the light circle's vx after the hit, px/s: ((ma - e mb) va + (1 + e) mb vb) / (ma + mb)",
+                          Approx(((ma - e * mb) * va + (1 + e) * mb * vb) / (ma + mb)).epsilon(1e-12),
+                          pair.a.velocity().x);
+        test::expectEqual("the heavy circle's vx after the hit, px/s: ((mb - e ma) vb + (1 + e) ma va) / (ma + mb)",
+                          Approx(((mb - e * ma) * vb + (1 + e) * ma * va) / (ma + mb)).epsilon(1e-12),
+                          pair.b.velocity().x);
         requireConserved(momentum, test::linearMomentum(pair.page.core));
     }
 }
@@ -134,11 +146,13 @@ TEST_CASE("collision impulse: a ball dropped on a static floor rebounds at e tim
             page.steps(1);
         }
         const double rising = -ball.velocity().y;
-        REQUIRE(rising > 0);
+        if (!test::expectAbove("the ball's upward speed after the bounce, px/s: it rebounds", 0, rising)) return;
         const double tolerance = kG * kDt / falling * (1 + 1e-9);
-        CHECK(std::abs(rising / falling - e) <= tolerance);
-        CHECK(rising / falling == Approx(e - kG * kDt / falling).epsilon(1e-9));
-        CHECK(ball.velocity().x == 0);
+        test::expectAtMost("|rebound ratio - e|: within g dt / (the speed it hit at)", tolerance,
+                           std::abs(rising / falling - e));
+        test::expectEqual("the rebound ratio (speed up / speed down): e - g dt / v",
+                          Approx(e - kG * kDt / falling).epsilon(1e-9), rising / falling);
+        test::expectEqual("the ball's vx after a straight drop, px/s", 0, ball.velocity().x);
         WARN("dropped 80 px, hit at " << falling << " px/s, e = " << e << ": rebound ratio " << rising / falling);
     }
 }
@@ -155,8 +169,8 @@ TEST_CASE("collision impulse: separating shapes are still pushed apart, in every
     page.steps(1);
     // 1e-12 px: one step's rounding near 100 px, far below the last pass's 6.6e-10 px.
     CHECK_THAT(b.center().x - a.center().x, test::near(20 - 5 * std::pow(0.2, 15), 1e-12));
-    CHECK(a.velocity() == Vec2{-10, 0});
-    CHECK(b.velocity() == Vec2{10, 0});
+    test::expectEqual("circle a's velocity, px/s: a separating pair gets no impulse", Vec2{-10, 0}, a.velocity());
+    test::expectEqual("circle b's velocity, px/s: a separating pair gets no impulse", Vec2{10, 0}, b.velocity());
 }
 
 TEST_CASE("collision impulse: a sliding box slows at about g whatever its friction (book's model, kept)") {
@@ -173,7 +187,9 @@ TEST_CASE("collision impulse: a sliding box slows at about g whatever its fricti
         box.setVelocity({100, 0});
         page.steps(60);
         const double deceleration = 100 - box.velocity().x;  // over 1 s
-        CHECK(deceleration == Approx(kG).epsilon(0.05));
+        test::expectEqual(
+            "the sliding box's deceleration over 1 s, px/s^2: about g (the book's friction, capped at jN)",
+            Approx(kG).epsilon(0.05), deceleration);
         WARN("mu = " << mu << ": the box slows at " << deceleration << " px/s^2 (Coulomb: " << mu * kG << ")");
     }
 }
@@ -190,7 +206,7 @@ TEST_CASE("collision impulse: a box resting on a static floor stays put for 10,0
         drift = std::max(drift, box.center().distance(settled));
         turn = std::max(turn, std::abs(box.angle()));
     }
-    CHECK(drift < 0.1);
+    test::expectBelow("how far the resting box drifted in 10,000 steps, px", 0.1, drift);
     WARN("resting box: drifted at most " << drift << " px and turned at most " << turn << " rad in 10,000 steps");
 }
 
@@ -224,19 +240,21 @@ TEST_CASE(
             FAIL("step " << step << ": shape " << *bad << " is not finite");
         most_energy = std::max(most_energy, test::kineticEnergy(page.core));
     }
-    REQUIRE(most_energy > 0);
+    if (!test::expectAbove("the most kinetic energy in 10,000 steps: H set the shapes moving", 0, most_energy)) return;
     double fastest = 0;
     for (std::size_t i = 0; i < page.core.objectCount(); ++i) {
         const engine::RigidShape& shape = page.core.object(i);
         INFO("object " << i);
-        CHECK(test::outside(shape.center(), 0, page.core.width(), 0, page.core.height()) == 0);
+        test::expectEqual("how far its centre is off the canvas after 10,000 steps, px", 0,
+                          test::outside(shape.center(), 0, page.core.width(), 0, page.core.height()));
         fastest = std::max(fastest, shape.velocity().length());
     }
     const double energy_left = test::kineticEnergy(page.core);
     WARN("after 10,000 steps: " << page.core.objectCount() << " shapes, the fastest at " << fastest
                                 << " px/s, kinetic energy " << energy_left / most_energy << " of its most");
-    CHECK(fastest < 1);
-    CHECK(energy_left < 1e-5 * most_energy);
+    test::expectBelow("the fastest shape's speed after 10,000 steps, px/s: at rest", 1, fastest);
+    test::expectBelow("the kinetic energy left after 10,000 steps: below 1e-5 of its most", 1e-5 * most_energy,
+                      energy_left);
 }
 
 TEST_CASE("collision impulse: the frame no longer draws the collision info") {
@@ -252,7 +270,7 @@ TEST_CASE("collision impulse: the frame no longer draws the collision info") {
     for (int y = 0; y < pixels.height; ++y) {
         for (int x = 0; x < pixels.width; ++x) orange += pixels.at(x, y) == browser::colors::kOrange ? 1 : 0;
     }
-    CHECK(orange == 0);
+    test::expectEqual("orange pixels of the frame: from 4.3 on the book no longer draws the collision info", 0, orange);
 }
 
 }  // namespace collision_impulse_test

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "circle.h"
+#include "expect.h"
 #include "legend_color.h"
 #include "stage_fixture.h"
 
@@ -46,16 +47,20 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
     const browser::Document& document = page.window.document;
     const browser::Image& pixels = document.canvas.pixels();
     // The markers' crosses meet on those pixel centres, and they are drawn last.
-    CHECK(pixels.at(210, 100) == test::legendColor(document, "start"));
-    CHECK(pixels.at(220, 100) == test::legendColor(document, "end"));
+    test::expectEqual("pixel (210, 100), the start of the overlap: the legend's start marker",
+                      test::legendColor(document, "start"), pixels.at(210, 100));
+    test::expectEqual("pixel (220, 100), the end of the overlap: the legend's end marker",
+                      test::legendColor(document, "end"), pixels.at(220, 100));
     // The normal runs 20 px right from the start along the row: (213.5, 100.5) is on it,
     // 2 px or more from each marker's strokes and inside both circles.
-    CHECK(pixels.at(213, 100) == test::legendColor(document, "normal"));
+    test::expectEqual("pixel (213, 100), on the normal drawn 20 px from the start",
+                      test::legendColor(document, "normal"), pixels.at(213, 100));
     // It ends at x = 230.5: two pixels on, the row is white.
-    CHECK(pixels.at(232, 100) == browser::colors::kWhite);
+    test::expectEqual("pixel (232, 100), past the normal's 20 px", browser::colors::kWhite, pixels.at(232, 100));
     const auto counted = std::find_if(document.legend.begin(), document.legend.end(),
                                       [](const auto& entry) { return entry.text == "colliding pairs: 1"; });
-    CHECK(counted != document.legend.end());
+    test::expectEqual("the legend's line \"colliding pairs: 1\" (one pair collides)", true,
+                      counted != document.legend.end());
 }
 
 }  // namespace collision_overlay_test

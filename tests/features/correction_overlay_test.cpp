@@ -5,6 +5,8 @@
 #include <string>
 
 #include "circle.h"
+#include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -30,14 +32,17 @@ TEST_CASE("correction overlay: the move of one pass, ten times longer, from the 
     // The arrow runs from x = 238.5 + moved to 238.5 + 11 moved (256.1 at the book's
     // rate 0.8), along the row: (250.5, 100.5) is on it, (257.5, 100.5) past its tip and
     // a pixel short of the circle's outline, drawn where it was before the step (258.5).
-    REQUIRE(238.5 + 11 * moved > 252.0);
-    REQUIRE(238.5 + 11 * moved < 257.0);
-    browser::Color correction{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("correction", 0) == 0) correction = entry.color;
-    }
-    CHECK(pixels.at(250, 100) == correction);
-    CHECK(pixels.at(257, 100) == browser::colors::kWhite);
+    if (!test::expectAbove("where the arrow ends, px: past the pixel checked (the correction at the scene's rate)",
+                           252.0, 238.5 + 11 * moved))
+        return;
+    if (!test::expectBelow("where the arrow ends, px: short of the pixel checked past it", 257.0, 238.5 + 11 * moved))
+        return;
+    const browser::Color correction = test::legendColor(page.window.document, "correction");
+    test::expectEqual(
+        "pixel (250, 100), on the correction arrow (ten times the move, from the moved centre): the legend's "
+        "correction colour",
+        correction, pixels.at(250, 100));
+    test::expectEqual("pixel (257, 100), past the arrow's tip", browser::colors::kWhite, pixels.at(257, 100));
 }
 
 TEST_CASE("correction overlay: the physics keeps its record only while the overlay is on, and moves alike") {
@@ -62,7 +67,7 @@ TEST_CASE("correction overlay: the physics keeps its record only while the overl
     CHECK(plain.core.physics().responses().empty());
     REQUIRE(shown.core.physics().responses().size() == 1);
     CHECK_THAT(shown.core.physics().responses().at({0, 1}).moved_second,
-               test::near(browser::Vec2{2.0 * settings.correction_rate, 0}, 1e-12));
+               test::near(engine::Vec2{2.0 * settings.correction_rate, 0}, 1e-12));
     // The record changes nothing the step does.
     CHECK(plain.core.object(1).center() == shown.core.object(1).center());
     CHECK(plain.core.object(1).velocity() == shown.core.object(1).velocity());

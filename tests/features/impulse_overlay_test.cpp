@@ -6,6 +6,8 @@
 #include <string>
 
 #include "circle.h"
+#include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -29,19 +31,17 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
     page.core.runGameLoop();
 
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
-    CHECK_THAT(response.normal_impulse, test::near(browser::Vec2{72, 0}, 1e-9));
-    CHECK_THAT(response.tangent_impulse, test::near(browser::Vec2{0, 0}, 1e-9));
-    CHECK_THAT(ball.velocity(), test::near(browser::Vec2{12, 0}, 1e-9));
+    CHECK_THAT(response.normal_impulse, test::near(lib::Vec2{72, 0}, 1e-9));
+    CHECK_THAT(response.tangent_impulse, test::near(lib::Vec2{0, 0}, 1e-9));
+    CHECK_THAT(ball.velocity(), test::near(lib::Vec2{12, 0}, 1e-9));
 
     // 72 x 2 px = 144 px, cut at 60: from the contact (between x = 218.5 and 220.5)
     // to x = 278.5 or 279.5. (270.5, 100.5) is on the shaft; (285.5, 100.5) past it.
-    browser::Color normal_impulse{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("normal impulse", 0) == 0) normal_impulse = entry.color;
-    }
+    const browser::Color normal_impulse = test::legendColor(page.window.document, "normal impulse");
     const browser::Image& pixels = page.window.document.canvas.pixels();
-    CHECK(pixels.at(270, 100) == normal_impulse);
-    CHECK(pixels.at(285, 100) == browser::colors::kWhite);
+    test::expectEqual("pixel (270, 100), on the normal impulse's arrow: the legend's colour", normal_impulse,
+                      pixels.at(270, 100));
+    test::expectEqual("pixel (285, 100), past the arrow's tip", browser::colors::kWhite, pixels.at(285, 100));
 }
 
 }  // namespace impulse_overlay_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include "circle.h"
+#include "expect.h"
+#include "legend_color.h"
 #include "near.h"
 #include "world_fixture.h"
 
@@ -25,17 +27,16 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});
-    CHECK_THAT(response.contact, test::near(browser::Vec2{218.5, 100.5}, 1e-9));
-    CHECK_THAT(response.arm_first, test::near(browser::Vec2{18, 0}, 1e-9));
-    CHECK_THAT(response.arm_second, test::near(browser::Vec2{-20, 0}, 1e-9));
-    CHECK(response.spin_first == 0.0);
-    CHECK(response.spin_second == 0.0);
-    browser::Color lever{};
-    for (const auto& entry : page.window.document.legend) {
-        if (entry.text.rfind("lever arms", 0) == 0) lever = entry.color;
-    }
+    CHECK_THAT(response.contact, test::near(lib::Vec2{218.5, 100.5}, 1e-9));
+    CHECK_THAT(response.arm_first, test::near(lib::Vec2{18, 0}, 1e-9));
+    CHECK_THAT(response.arm_second, test::near(lib::Vec2{-20, 0}, 1e-9));
+    test::expectEqual("the first shape's spin from the hit, rad/s: a head-on hit turns nothing", 0.0,
+                      response.spin_first);
+    test::expectEqual("the second shape's spin from the hit, rad/s", 0.0, response.spin_second);
+    const browser::Color lever = test::legendColor(page.window.document, "lever arms");
     // The first arm runs along the row y = 100.5 from x = 200.5 to 218.5.
-    CHECK(page.window.document.canvas.pixels().at(205, 100) == lever);
+    test::expectEqual("pixel (205, 100), on the lever arm from the centre to the contact: the legend's colour", lever,
+                      page.window.document.canvas.pixels().at(205, 100));
 }
 
 }  // namespace lever_arm_overlay_test

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "circle.h"
+#include "expect.h"
 #include "legend_color.h"
 #include "world_fixture.h"
 
@@ -25,21 +26,24 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     const browser::Image& pixels = document.canvas.pixels();
     const browser::Color velocity = test::legendColor(document, "velocity");
     // On the shaft, 9.5 px outside the circle and 10 px before the tip: fully covered.
-    CHECK(pixels.at(320, 200) == velocity);
+    test::expectEqual("pixel (320, 200), on the velocity arrow (half a second of motion): the legend's colour",
+                      velocity, pixels.at(320, 200));
     // Past the tip, nothing.
-    CHECK(pixels.at(333, 200) == browser::colors::kWhite);
+    test::expectEqual("pixel (333, 200), past the arrow's tip", browser::colors::kWhite, pixels.at(333, 200));
     // The spin's arc: radius 10 + 4 px, from straight up (-pi/2) clockwise by 1 rad.
     // Halfway, at -pi/2 + 0.5, it passes (307.21, 188.22): that pixel is mostly the
     // velocity colour. The same radius a quarter turn before the start is untouched.
     const auto on_arc = [](double angle) {
-        return browser::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
+        return lib::Vec2{300.5 + 14 * std::cos(angle), 200.5 + 14 * std::sin(angle)};
     };
-    const browser::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
+    const lib::Vec2 middle = on_arc(-std::acos(-1.0) / 2 + 0.5);
     const browser::Color arc = pixels.at(static_cast<int>(middle.x), static_cast<int>(middle.y));
-    CHECK(arc.g < 200);  // white would be 255 in each channel
-    CHECK(arc.r < 200);
-    const browser::Vec2 before = on_arc(-std::acos(-1.0));
-    CHECK(pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)) == browser::colors::kWhite);
+    // white would be 255 in each channel
+    test::expectBelow("the spin arc's pixel halfway round, green channel: drawn (white would be 255)", 200, int{arc.g});
+    test::expectBelow("the spin arc's pixel halfway round, red channel: drawn", 200, int{arc.r});
+    const lib::Vec2 before = on_arc(-std::acos(-1.0));
+    test::expectEqual("the pixel on the arc's radius a quarter turn before its start: untouched",
+                      browser::colors::kWhite, pixels.at(static_cast<int>(before.x), static_cast<int>(before.y)));
 }
 
 }  // namespace motion_overlay_test

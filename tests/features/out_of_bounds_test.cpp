@@ -12,6 +12,7 @@
 
 #include "circle.h"
 #include "core.h"
+#include "expect.h"
 #include "near.h"
 #include "world_fixture.h"
 #include "world_from_scene.h"
@@ -61,27 +62,33 @@ TEST_CASE("out of bounds: past each of the four edges a shape is removed; on the
     for (const Edge& edge : edges) {
         INFO(edge.name << " edge");
         ScenePage page(R"(, "movement": false)");
-        REQUIRE(page.world.remove_out_of_bounds);  // the demo's default
-        REQUIRE(page.core.width() == kWidth);
-        REQUIRE(page.core.height() == kHeight);
+        // the demo's default
+        test::requireEqual("the world's remove_out_of_bounds: on, the demo's default", true,
+                           page.world.remove_out_of_bounds);
+        test::requireEqual("the canvas width, px", kWidth, page.core.width());
+        test::requireEqual("the canvas height, px", kHeight, page.core.height());
         const Vec2 inside{500, 300};
         page.core.add(Circle(edge.on, 5));
         page.core.add(Circle(edge.past, 5));
         page.core.add(Circle(inside, 5));
         page.core.update();
-        CHECK(centres(page.core) == std::vector<Vec2>{edge.on, inside});
+        test::expectEqual(
+            "the centres left after a step: the ball on the edge and the one inside stay, the one 0.25 px past goes",
+            std::vector<Vec2>{edge.on, inside}, centres(page.core));
         page.core.update();
-        CHECK(page.core.objectCount() == 2);
+        test::expectEqual("objects after another step: the two on the canvas stay", 2, page.core.objectCount());
     }
 }
 
 TEST_CASE("out of bounds: remove_out_of_bounds false keeps shapes off the canvas, moving as before") {
     ScenePage page(R"(, "remove_out_of_bounds": false, "gravity": [0, 20])");
-    REQUIRE_FALSE(page.world.remove_out_of_bounds);
+    test::requireEqual("the world's remove_out_of_bounds, as the scene sets it", false,
+                       page.world.remove_out_of_bounds);
     Circle& far_out = page.core.add(Circle({-300, kHeight + 50}, 5));
     page.core.add(Circle({kWidth + 0.25, 100}, 5));
     for (int step = 0; step < 60; ++step) page.core.update();
-    CHECK(page.core.objectCount() == 2);
+    test::expectEqual("objects after 60 steps with remove_out_of_bounds false: both kept, off the canvas", 2,
+                      page.core.objectCount());
     // Still simulated: 60 steps of a fall from rest, symplectic Euler, g dt^2 60 61 / 2.
     // (1e-9 px: rounding of 60 steps on coordinates of a few hundred px.)
     const double dt = page.world.dt;
@@ -98,10 +105,13 @@ TEST_CASE("out of bounds: a shape is removed at the end of the step that takes i
     page.core.add(Circle({kWidth - 0.5, 100}, 5)).setVelocity({60, 0});
     page.core.add(Circle({300, 100}, 5));
     page.core.update();
-    REQUIRE(page.core.objectCount() == 2);
+    test::requireEqual("objects after the step: the middle ball, past the right edge, removed", 2,
+                       page.core.objectCount());
     const double fallen = 20 * page.world.dt * page.world.dt;
-    CHECK(first.center() == Vec2{100, 100 + fallen});
-    CHECK(page.core.object(1).center() == Vec2{300, 100 + fallen});
+    test::expectEqual("the first ball's centre after the step, px: it took its step", Vec2{100, 100 + fallen},
+                      first.center());
+    test::expectEqual("the third ball's centre after the step, px: it took its step too, though the one before it went",
+                      Vec2{300, 100 + fallen}, page.core.object(1).center());
 }
 
 TEST_CASE("out of bounds: the selection stays on its index, and goes back to object 0 once past the end") {
@@ -121,8 +131,9 @@ TEST_CASE("out of bounds: the selection stays on its index, and goes back to obj
         }
         page.core.select(c.selected);
         page.core.update();
-        REQUIRE(page.core.objectCount() == 2);
-        CHECK(page.core.selectedIndex() == c.then_selected);
+        test::requireEqual("objects after the step: the one off the canvas removed", 2, page.core.objectCount());
+        test::expectEqual("the selected index after the removal (the book's gObjectNum)", c.then_selected,
+                          page.core.selectedIndex());
     }
 }
 

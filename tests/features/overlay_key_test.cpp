@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "expect.h"
 #include "png_io.h"
 #include "stage_program.h"
 
@@ -18,7 +19,7 @@ browser::Image finalPicture(const test::ScratchFolder& folder, const std::string
     const std::filesystem::path out = folder.path / name;
     const test::ProgramRun run =
         test::runStageProgram(folder, "--frames 2 --out " + test::quoted(out) + " " + arguments);
-    REQUIRE(run.status == 0);
+    test::requireEqual("the program's exit status (0: the run succeeded)", 0, run.status);
     return browser::read_png(out / "final.png");
 }
 
@@ -32,10 +33,12 @@ TEST_CASE("overlay key: --overlay and the key t show the same overlay; t again t
     const browser::Image key = finalPicture(folder, "key", "--keys \"f g t\"");
     const browser::Image twice = finalPicture(folder, "twice", "--keys \"f g t t@1\"");
     const browser::Image option_then_key = finalPicture(folder, "option_then_key", "--overlay --keys \"f g t@1\"");
-    CHECK(option.rgba != book.rgba);  // the overlay draws something on the default scene
-    CHECK(key.rgba == option.rgba);
-    CHECK(twice.rgba == book.rgba);
-    CHECK(option_then_key.rgba == book.rgba);
+    // the overlay draws something on the default scene
+    test::expectEqual("the picture with --overlay differs from the book's: the overlay draws something", true,
+                      option.rgba != book.rgba);
+    test::expectEqual("the picture after the key T: as with --overlay", true, key.rgba == option.rgba);
+    test::expectEqual("the picture after T twice: the book's again", true, twice.rgba == book.rgba);
+    test::expectEqual("the picture with --overlay and then T: the book's", true, option_then_key.rgba == book.rgba);
 }
 
 }  // namespace overlay_key_test

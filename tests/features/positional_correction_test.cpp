@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "circle.h"
+#include "expect.h"
 #include "my_game.h"
 #include "near.h"
 #include "physics.h"
@@ -43,24 +44,31 @@ double deepestOverlap(const engine::Core& core) {
 }  // namespace
 
 TEST_CASE("positional correction: two circles part by inverse mass, 80% of the overlap a pass") {
-    REQUIRE(engine::kRelaxationCount == 15);
-    REQUIRE(engine::kPosCorrectionRate == 0.8);
+    test::requireEqual("the relaxation loop's passes a step (the book's mRelaxationCount: kRelaxationCount)", 15,
+                       engine::kRelaxationCount);
+    test::requireEqual("the share of an overlap each pass removes (the book's mPosCorrectionRate: kPosCorrectionRate)",
+                       0.8, engine::kPosCorrectionRate);
     test::WorldFixture page(test::world(false));
     // Radii 10, centres 15 apart: 5 px deep along +x. Masses 1 and 3: inverse masses 1
     // and 1/3, so the light one takes 3/4 of every move and the heavy one 1/4.
     engine::Circle& light = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
     engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
     page.steps(1);
+    INFO(
+        "two circles of radius 10, 5 px deep along x, masses 1 (light) and 3 (heavy), after one step of 15 passes, "
+        "each removing 80% of what is left: the light one takes 3/4 of every move");
     const double parted = 5 * (1 - kLeftAfterOneStep);
     // 1e-12 px: the rounding of 15 passes on coordinates near 100 px (a few 1e-14 px
     // each), well below what the last pass moves (5 * 0.2^14 * 0.8 = 6.6e-10 px).
     CHECK_THAT(light.center().x, test::near(100 - parted * 3 / 4, 1e-12));
     CHECK_THAT(heavy.center().x, test::near(115 + parted / 4, 1e-12));
-    CHECK(light.center().y == 100);
+    test::expectEqual("the light circle's y, px: the overlap is along x only", 100.0, light.center().y);
     // The pair's centre of mass has not moved: 1 * 100 + 3 * 115 = 445.
-    CHECK(light.center().x + 3 * heavy.center().x == Approx(445).epsilon(1e-15));
+    INFO("the pair's centre of mass, 1 x light + 3 x heavy, px: the passes move the pair apart, not along");
+    CHECK_THAT(light.center().x + 3 * heavy.center().x, test::near(445, 4.5e-13));
     // The last pass still found the pair, 5 * 0.2^14 deep, and drew it.
-    REQUIRE(page.core.physics().collisions().size() == 1);
+    test::requireEqual("pairs the last of the 15 passes still found (Physics::collisions(): what it keeps)", 1u,
+                       page.core.physics().collisions().size());
     CHECK_THAT(page.core.physics().collisions()[0].info.depth(), test::near(5 * kLeftAfterOneStep / 0.2, 1e-12));
 }
 
@@ -76,12 +84,14 @@ TEST_CASE("positional correction: each pass removes correction_rate of what is l
     };
     const Case cases[] = {{0.8, 15}, {0.8, 1}, {0.8, 3}, {0.5, 15}, {0.5, 2}, {0.3, 7}, {1.0, 4}, {0.0, 15}, {0.8, 0}};
     for (const Case& c : cases) {
-        INFO("correction_rate " << c.rate << ", relaxation_iterations " << c.passes);
+        INFO("a scene file sets the world's correction_rate " << c.rate << " and relaxation_iterations " << c.passes
+                                                              << ": the passes and the share each removes come from "
+                                                                 "WorldSettings, not the book's constants");
         const engine::WorldSettings world =
             test::worldFromScene(R"({"movement": false, "correction_rate": )" + std::to_string(c.rate) +
                                  R"(, "relaxation_iterations": )" + std::to_string(c.passes) + "}");
-        REQUIRE(world.correction_rate == c.rate);
-        REQUIRE(world.relaxation_iterations == c.passes);
+        test::requireEqual("the scene's correction_rate, as read", c.rate, world.correction_rate);
+        test::requireEqual("the scene's relaxation_iterations, as read", c.passes, world.relaxation_iterations);
         test::WorldFixture page(world);
         engine::Circle& light = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
         engine::Circle& heavy = page.core.add(engine::Circle({115, 100}, 10, {.mass = 3}));
@@ -92,9 +102,10 @@ TEST_CASE("positional correction: each pass removes correction_rate of what is l
         CHECK_THAT(heavy.center().x - light.center().x, test::near(20 - left, 1e-12));
         CHECK_THAT(light.center().x, test::near(100 - (5 - left) * 3 / 4, 1e-12));
         CHECK_THAT(heavy.center().x, test::near(115 + (5 - left) / 4, 1e-12));
-        CHECK(light.velocity() == Vec2{});
+        test::expectEqual("the light circle's velocity, px/s: positional correction moves, it does not push", Vec2{},
+                          light.velocity());
         if (c.passes > 0 && c.rate < 1) {
-            REQUIRE(page.core.physics().collisions().size() == 1);
+            test::requireEqual("pairs the last pass still found", 1u, page.core.physics().collisions().size());
             CHECK_THAT(page.core.physics().collisions()[0].info.depth(),
                        test::near(5 * std::pow(1 - c.rate, c.passes - 1), 1e-12));
         }
@@ -124,7 +135,7 @@ TEST_CASE("positional correction: the scene file's positional_correction: false 
         INFO("positional_correction " << on);
         const engine::WorldSettings world = test::worldFromScene(
             on ? R"({"movement": false})" : R"({"movement": false, "positional_correction": false})");
-        REQUIRE(world.positional_correction == on);
+        test::requireEqual("the scene's positional_correction, as read", on, world.positional_correction);
         test::WorldFixture page(world);
         engine::Circle& a = page.core.add(engine::Circle({100, 100}, 10));
         engine::Circle& b = page.core.add(engine::Circle({115, 100}, 10));
@@ -132,8 +143,10 @@ TEST_CASE("positional correction: the scene file's positional_correction: false 
         if (on) {
             CHECK_THAT(b.center().x - a.center().x, test::near(20 - 5 * kLeftAfterOneStep, 1e-12));
         } else {
-            CHECK(a.center() == Vec2{100, 100});
-            CHECK(b.center() == Vec2{115, 100});
+            test::expectEqual("the first circle's centre with positional correction off, px", Vec2{100, 100},
+                              a.center());
+            test::expectEqual("the second circle's centre with positional correction off, px", Vec2{115, 100},
+                              b.center());
         }
     }
 }
@@ -144,15 +157,19 @@ TEST_CASE("positional correction: a static shape does not move, nor do two stati
     engine::Rectangle& wall = page.core.add(engine::Rectangle({190, 100}, 20, 100, {.mass = 0}));
     engine::Circle& ball = page.core.add(engine::Circle({50, 95}, 10));  // 5 px into the floor's top at y = 100
     page.steps(1);
-    CHECK(floor.center() == Vec2{100, 110});
-    CHECK(wall.center() == Vec2{190, 100});  // floor and wall overlap, and stay so
-    CHECK(ball.center().x == 50);
+    test::expectEqual("the static floor's centre after a step, px", Vec2{100, 110}, floor.center());
+    // floor and wall overlap, and stay so
+    test::expectEqual("the static wall's centre after a step, px", Vec2{190, 100}, wall.center());
+    test::expectEqual("the ball's x, px: the floor pushes it straight up", 50.0, ball.center().x);
     CHECK_THAT(ball.center().y, test::near(95 - 5 * (1 - kLeftAfterOneStep), 1e-12));
     // The pass tests the floor and the wall like any pair, as the book's does; only the
     // resolution leaves two static shapes alone. (4.2 records and draws their collision,
     // later stages keep only the pairs the resolution works on.)
     for (const engine::Collision& pair : page.core.physics().collisions()) {
         const bool floor_and_wall = pair.first == 0 && pair.second == 1;
+        INFO("a pair the last pass found: objects " << pair.first << " and " << pair.second
+                                                    << "; expected the floor and the wall (0, 1), or a pair with the "
+                                                       "ball (object 2)");
         CHECK((floor_and_wall || pair.second == 2));
     }
 }
@@ -161,13 +178,17 @@ TEST_CASE("positional correction: M turns it off and on again") {
     test::WorldFixture page(test::world(false));
     engine::Circle& a = page.core.add(engine::Circle({100, 100}, 10));
     engine::Circle& b = page.core.add(engine::Circle({110, 100}, 10));
-    CHECK(page.core.settings().positional_correction);
+    test::expectEqual("positional correction as the page starts (WorldSettings::positional_correction)", true,
+                      page.core.settings().positional_correction);
     page.press(Key::M);
-    CHECK_FALSE(page.core.settings().positional_correction);
+    test::expectEqual("positional correction after M", false, page.core.settings().positional_correction);
     page.steps(5);
-    CHECK(a.center() == Vec2{100, 100});
-    CHECK(b.center() == Vec2{110, 100});
-    CHECK(page.core.physics().collisions().size() == 1);  // still found, only not resolved
+    test::expectEqual("the first circle's centre after 5 steps with positional correction off, px", Vec2{100, 100},
+                      a.center());
+    test::expectEqual("the second circle's centre after 5 steps with positional correction off, px", Vec2{110, 100},
+                      b.center());
+    test::expectEqual("pairs the pass found with positional correction off: still found, only not resolved", 1u,
+                      page.core.physics().collisions().size());
     page.press(Key::M);
     page.steps(1);
     // 1e-12 px: one step's rounding on coordinates near 100 px is a few 1e-14 px; the
@@ -207,11 +228,12 @@ TEST_CASE("positional correction: 20 shapes created at one point part within 200
             ++steps;
         }
         INFO("seed " << seed);
-        CHECK(steps <= kBound);
+        test::expectAtMost("steps until no two of the 20 shapes overlap by more than 0.5 px", kBound, steps);
         steps_taken.push_back(steps);
     }
     std::sort(steps_taken.begin(), steps_taken.end());
-    CHECK(steps_taken[steps_taken.size() / 2] <= kMedianBound);
+    test::expectAtMost("the median, over ten seeds, of the steps until 20 shapes made at one point part", kMedianBound,
+                       steps_taken[steps_taken.size() / 2]);
     WARN("20 shapes at one point parted to within " << kTolerance << " px in " << steps_taken.front() << " to "
                                                     << steps_taken.back() << " steps, median "
                                                     << steps_taken[steps_taken.size() / 2]);

@@ -17,6 +17,7 @@
 #include "circle.h"
 #include "collision_checks.h"
 #include "physics.h"
+#include "expect.h"
 #include "rectangle.h"
 
 namespace rectangle_circle_collision_test {
@@ -30,11 +31,17 @@ namespace {
 std::optional<engine::CollisionInfo> collide(const engine::Rectangle& box, const engine::Circle& ball) {
     const auto from_box = box.collisionTest(ball);
     const auto from_ball = ball.collisionTest(box);
-    CHECK(from_box.has_value() == from_ball.has_value());
+    INFO("the " << Catch::Detail::stringify(box) << " and the " << Catch::Detail::stringify(ball)
+                << ": the circle's collisionTest hands the pair to the rectangle's, so both answer alike");
+    test::expectEqual("a collision found by the circle's test: as by the rectangle's", from_box.has_value(),
+                      from_ball.has_value());
     if (from_box && from_ball) {
-        CHECK(from_box->depth() == from_ball->depth());
-        CHECK(from_box->normal() == from_ball->normal());
-        CHECK(from_box->start() == from_ball->start());
+        test::expectEqual("the depth by the circle's test, px: as by the rectangle's", from_box->depth(),
+                          from_ball->depth());
+        test::expectEqual("the normal by the circle's test: as by the rectangle's (from the rectangle to the circle)",
+                          from_box->normal(), from_ball->normal());
+        test::expectEqual("the start by the circle's test, px: as by the rectangle's", from_box->start(),
+                          from_ball->start());
     }
     return from_box;
 }
@@ -164,12 +171,17 @@ TEST_CASE(
     // this (sizes >= 1e-3 px with |coordinates| <= 1e6 px keep 9 digits to spare): see
     // fuzz/collision_fuzz.cpp.
     const engine::Rectangle sliver({400.5, 200}, 1e-14, 40);
-    CHECK(sliver.vertices()[0].x == sliver.vertices()[1].x);
-    CHECK(sliver.faceNormals()[1] == Vec2{0, 0});
+    test::expectEqual("the sliver's right side x (vertex 1), px: rounded onto its left side's", sliver.vertices()[0].x,
+                      sliver.vertices()[1].x);
+    test::expectEqual("the sliver's face normal 1 (right): the zero vector, normalized from zero", Vec2{0, 0},
+                      sliver.faceNormals()[1]);
     const auto info = sliver.collisionTest(engine::Circle({395, 200}, 10));
-    REQUIRE(info.has_value());
-    CHECK(info->depth() == 10);
-    CHECK(info->normal() == Vec2{0, 0});
+    test::requireEqual(
+        "a collision of the sliver and a circle of radius 10 beside it: \"inside\", behind a face 0 px "
+        "away",
+        true, info.has_value());
+    test::expectEqual("its depth, px: the radius", 10.0, info->depth());
+    test::expectEqual("its normal: none, the zero vector", Vec2{0, 0}, info->normal());
 }
 
 }  // namespace rectangle_circle_collision_test

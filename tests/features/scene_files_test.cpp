@@ -19,6 +19,7 @@
 #include "png_io.h"
 #include "rectangle.h"
 #include "scene_file.h"
+#include "page_world.h"
 #include "scene_io.h"
 #include "stage_program.h"
 #include "world_fixture.h"
@@ -67,72 +68,81 @@ std::vector<test::DumpRow> rowsOfStep(const std::vector<test::DumpRow>& rows, lo
     return found;
 }
 
-// Every world key some stage reads, each with a value that stage accepts.
-const std::map<std::string, std::string> kEveryWorldKey{
-    {"width", "640"},
-    {"height", "400"},
-    {"gravity", "[0, 5]"},
-    {"dt", "0.01"},
-    {"movement", "true"},
-    {"sleep", "false"},
-    {"sleep_speed", "1.5"},
-    {"time_to_sleep", "0.25"},
-    {"relaxation_iterations", "3"},
-    {"correction_rate", "0.5"},
-    {"positional_correction", "false"},
-    {"remove_out_of_bounds", "false"},
-    {"broad_phase", "\"all_pairs\""},
-    {"substeps", "2"},
-    {"integrator", "\"explicit\""},
-    {"friction_model", "\"coulomb\""},
-    {"rotation", "false"},
-    {"friction", "false"},
-    {"solver", "\"sequential_impulse\""},
-    {"velocity_iterations", "4"},
-    {"position_iterations", "2"},
-    {"warm_starting", "false"},
-    {"restitution_threshold", "10"},
-    {"position_method", "\"baumgarte\""},
-    {"position_rate", "0.3"},
-    {"slop", "0.5"},
-    {"continuous", "false"},
+// docs/scene_format.md, whose tables give every key of every stage: its values, its
+// default and the stages that read it. Each stage holds them against its own keys.
+const fs::path kSceneFormat = fs::path(SCENE_LIBRARY_DIR) / ".." / ".." / "docs" / "scene_format.md";
+
+struct Table {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
 };
 
-// The keys each stage reads, as docs/scene_format.md tables them: the book's settings
-// arrive with the project that introduces them, the knobs with their own stage.
-// A table, a stage a line, which the layout would spread to one key a line:
-// clang-format off
-const std::map<std::string, std::vector<std::string>> kKeysOfStage{
-    {"s4_1", {"width", "height", "gravity", "dt", "movement"}},
-    {"s4_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction"}},
-    {"s4_3", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction"}},
-    {"s4_4", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction"}},
-    {"s5_1", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds"}},
-    {"s5_2", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds", "broad_phase"}},
-    {"s5_3", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
-              "friction_model", "rotation", "friction"}},
-    {"s5_4", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
-              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
-              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop"}},
-    {"s5_5", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
-              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
-              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
-              "sleep_speed", "time_to_sleep"}},
-    {"s5_6", {"width", "height", "gravity", "dt", "movement", "relaxation_iterations", "correction_rate",
-              "positional_correction", "remove_out_of_bounds", "broad_phase", "substeps", "integrator",
-              "friction_model", "rotation", "friction", "solver", "velocity_iterations", "position_iterations",
-              "warm_starting", "restitution_threshold", "position_method", "position_rate", "slop", "sleep",
-              "sleep_speed", "time_to_sleep", "continuous"}},
-};
-// clang-format on
+std::vector<std::string> cellsOf(const std::string& line) {
+    std::vector<std::string> cells;
+    std::size_t start = 1;
+    for (std::size_t bar = line.find('|', start); bar != std::string::npos; bar = line.find('|', start)) {
+        std::string cell = line.substr(start, bar - start);
+        cell.erase(0, cell.find_first_not_of(' '));
+        cell.erase(cell.find_last_not_of(' ') + 1);
+        cells.push_back(cell);
+        start = bar + 1;
+    }
+    return cells;
+}
+
+// The first table after the line `heading`.
+Table tableAfter(const std::string& heading) {
+    std::ifstream in(kSceneFormat);
+    std::string line;
+    while (std::getline(in, line) && line != heading) {}
+    while (std::getline(in, line) && !line.starts_with("|")) {}
+    Table table{.header = cellsOf(line)};
+    std::getline(in, line);  // |---|---|
+    while (std::getline(in, line) && line.starts_with("|")) table.rows.push_back(cellsOf(line));
+    return table;
+}
+
+// "4.3" for s4_3, and stage numbers as numbers: 4.3 is 43.
+int stageNumber(std::string_view id) { return (id[1] - '0') * 10 + (id[3] - '0'); }
+int stageNumber() { return stageNumber(STAGE_ID); }
+
+// Whether a column "5.2" or "4.2-4.4" holds this stage.
+bool columnHolds(const std::string& column) {
+    const auto number = [](std::string_view text) { return (text[0] - '0') * 10 + (text[2] - '0'); };
+    if (column.size() == 3) return number(column) == stageNumber();
+    return column.size() == 7 && number(column) <= stageNumber() && stageNumber() <= number(column.substr(4));
+}
+
+// The key a row names: "`dt`" is dt.
+std::string keyOf(const std::vector<std::string>& row) { return row.at(0).substr(1, row.at(0).size() - 2); }
+
+// A default cell for this stage: "`[0, 10]`; `[0, 20]` from 5.1" is [0, 20] from 5.1 on.
+std::string defaultHere(const std::string& cell) {
+    std::string value;
+    std::size_t start = 0;
+    while (start < cell.size()) {
+        const std::size_t open = cell.find('`', start), close = cell.find('`', open + 1);
+        const std::size_t end = std::min(cell.find("; ", close), cell.size());
+        const std::string rest = cell.substr(close + 1, end - close - 1);
+        const bool applies =
+            rest.empty() || (rest.starts_with(" from ") && (rest[6] - '0') * 10 + (rest[8] - '0') <= stageNumber());
+        if (applies) value = cell.substr(open + 1, close - open - 1);
+        start = end + 2;
+    }
+    return value;
+}
+
+// The world keys docs/scene_format.md gives this stage, in the table's order.
+std::vector<std::string> documentedWorldKeys() {
+    const Table table = tableAfter("## Which stage reads which world key");
+    std::vector<std::string> keys;
+    for (const std::vector<std::string>& row : table.rows) {
+        for (std::size_t column = 0; column < table.header.size(); ++column) {
+            if (columnHolds(table.header[column]) && row.at(column) == "x") keys.push_back(keyOf(row));
+        }
+    }
+    return keys;
+}
 
 std::string commaList(const std::vector<std::string>& words) {
     std::string list;
@@ -143,15 +153,71 @@ std::string commaList(const std::vector<std::string>& words) {
 std::vector<std::string> keysThisStageReads() {
     engine::WorldSettings world;
     std::vector<std::string> names;
-    for (const browser::WorldKey& key : engine::worldKeys(world)) names.emplace_back(key.name());
+    for (const browser::SceneKey& key : engine::worldKeys(world)) names.emplace_back(key.name());
     return names;
 }
 
 }  // namespace
 
-TEST_CASE("scene files: the stage reads exactly the world keys of its book project") {
-    REQUIRE(kKeysOfStage.contains(STAGE_ID));
-    CHECK(keysThisStageReads() == kKeysOfStage.at(STAGE_ID));
+TEST_CASE("scene files: the stage reads exactly the world keys docs/scene_format.md gives it") {
+    CHECK(keysThisStageReads() == documentedWorldKeys());
+}
+
+TEST_CASE("scene files: the world keys' values and defaults are as docs/scene_format.md gives them") {
+    engine::WorldSettings world = engine::kBookWorld;
+    const Table table = tableAfter("## Which stage reads which world key");
+    REQUIRE(table.header.size() > 3);
+    REQUIRE(table.header[1] == "values");
+    REQUIRE(table.header[2] == "default");
+    for (const browser::SceneKey& key : engine::worldKeys(world)) {
+        const browser::KeyDescription described = browser::describe(key);
+        INFO(described.name);
+        const auto row = std::find_if(table.rows.begin(), table.rows.end(),
+                                      [&](const auto& cells) { return keyOf(cells) == described.name; });
+        REQUIRE(row != table.rows.end());
+        CHECK((*row)[1] == described.values);
+        CHECK(defaultHere((*row)[2]) == described.value_now);
+    }
+}
+
+TEST_CASE("scene files: the body keys of each shape are as docs/scene_format.md gives them") {
+    const Table table = tableAfter("## Body keys");
+    REQUIRE(table.header.size() >= 5);
+    std::vector<engine::BodyDescription> bodies;
+    const browser::SceneList list = engine::bodyList(bodies);
+    // The kind key's row: every body needs it, with one of the list's words.
+    std::string kinds;
+    for (std::size_t i = 0; i < list.kinds.size(); ++i) {
+        kinds.append(i == 0 ? "" : i + 1 == list.kinds.size() ? " or " : ", ");
+        kinds.append("\"").append(list.kinds[i]).append("\"");
+    }
+    REQUIRE_FALSE(table.rows.empty());
+    CHECK(keyOf(table.rows[0]) == list.kind_key);
+    CHECK(table.rows[0][2] == kinds);
+    for (std::size_t kind = 0; kind < list.kinds.size(); ++kind) {
+        const std::string shape(list.kinds[kind]);
+        INFO(shape);
+        std::vector<std::string> documented;
+        for (const std::vector<std::string>& row : table.rows) {
+            const bool of_shape = row[1] == "every body" || row[1] == shape;
+            if (row != table.rows[0] && of_shape &&
+                stageNumber() >= stageNumber("s" + row[4].substr(0, 1) + "_" + row[4].substr(2, 1))) {
+                documented.push_back(keyOf(row));
+            }
+        }
+        std::vector<std::string> declared;
+        for (const browser::SceneKey& key : list.add(kind)) {
+            const browser::KeyDescription described = browser::describe(key);
+            INFO(described.name);
+            declared.push_back(described.name);
+            const auto row = std::find_if(table.rows.begin(), table.rows.end(),
+                                          [&](const auto& cells) { return keyOf(cells) == described.name; });
+            REQUIRE(row != table.rows.end());
+            CHECK((*row)[2] == described.values);
+            CHECK((*row)[3] == (described.required ? "required" : "`" + described.value_now + "`"));
+        }
+        CHECK(declared == documented);
+    }
 }
 
 TEST_CASE("scene files: a body's \"bullet\" is read from 5.6 on and refused before, as any unknown key") {
@@ -169,8 +235,14 @@ TEST_CASE("scene files: a body's \"bullet\" is read from 5.6 on and refused befo
 
 TEST_CASE("scene files: the program takes each world key the stage reads and refuses every other one") {
     const std::vector<std::string> read = keysThisStageReads();
-    for (const std::string& name : read) CHECK(kEveryWorldKey.contains(name));  // a new key belongs in the list
-    for (const auto& [name, value] : kEveryWorldKey) {
+    // Every key of every stage, each with a value the stages that read it accept: its
+    // first default in docs/scene_format.md.
+    std::map<std::string, std::string> every_key;
+    for (const std::vector<std::string>& row : tableAfter("## Which stage reads which world key").rows) {
+        every_key[keyOf(row)] = row.at(2).substr(1, row.at(2).find('`', 1) - 1);
+    }
+    for (const std::string& name : read) CHECK(every_key.contains(name));
+    for (const auto& [name, value] : every_key) {
         const bool reads = std::find(read.begin(), read.end(), name) != read.end();
         INFO(name << (reads ? " (read)" : " (not read)"));
         const test::ScratchFolder folder("scene-key");
@@ -529,8 +601,8 @@ TEST_CASE("hostile input: SIGINT and SIGTERM end a run with no staging folder or
     for (const int signal : {SIGINT, SIGTERM}) {
         INFO("signal " << signal);
         const test::ScratchFolder folder("hostile-signal");
-        // A long run (about a minute): stopped as soon as its staging folder shows.
-        const pid_t pid = test::startStageProgram(folder, "--frames 100000 --every 0 --no-gif --keys '' --dump " +
+        // A long run (half a minute): stopped as soon as its staging folder shows.
+        const pid_t pid = test::startStageProgram(folder, "--frames 50000 --every 0 --no-gif --keys '' --dump " +
                                                               test::quoted(folder.path / "dump.csv") + outIn(folder));
         REQUIRE(pid > 0);
         const fs::path staging = folder.path / ("out.partial-" + std::to_string(pid));
@@ -564,12 +636,12 @@ TEST_CASE("hostile input: a step that leaves a number no double can be is named,
     test::WorldFixture page(engine::kBookWorld);
     engine::RigidShape& ball = page.core.add(engine::Circle({100, 100}, 10, {.mass = 1}));
     page.core.add(engine::Rectangle({100, 300}, 200, 20, {.mass = 0}));
-    CHECK_NOTHROW(engine::checkFinite(page.core));
+    CHECK_NOTHROW(browser::check_finite(engine::pageWorld(page.core)));
     ball.setVelocity({std::numeric_limits<double>::quiet_NaN(), 0});
     page.steps(1);
     try {
-        engine::checkFinite(page.core);
-        FAIL("checkFinite let a NaN through");
+        browser::check_finite(engine::pageWorld(page.core));
+        FAIL("check_finite let a NaN through");
     } catch (const browser::NonFiniteState& error) {
         CHECK(std::string(error.what())
                   .rfind("step 1: body 0 (circle) has a position or velocity that is not a finite number", 0) == 0);
@@ -579,12 +651,12 @@ TEST_CASE("hostile input: a step that leaves a number no double can be is named,
 TEST_CASE("hostile input: at every corner of the ranges a moving body's inverse mass and inertia are finite and > 0") {
     // The ranges of docs/scene_format.md: masses [1e-3, 1e6], sizes [0.01, 1e5] px. The
     // extreme inertias are m r^2 / 2 = 5e-8 and m (w^2 + h^2) / 12 = 1.7e15 or so.
-    std::vector<browser::BodyDescription> bodies;
+    std::vector<engine::BodyDescription> bodies;
     for (const double mass : {1e-3, 1e6}) {
         for (const double size : {0.01, 1e5}) {
-            bodies.push_back({.shape = browser::ShapeKind::circle, .radius = size, .mass = mass});
-            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = size, .height = size, .mass = mass});
-            bodies.push_back({.shape = browser::ShapeKind::rectangle, .width = 0.01, .height = 1e5, .mass = mass});
+            bodies.push_back({.shape = engine::ShapeType::Circle, .radius = size, .mass = mass});
+            bodies.push_back({.shape = engine::ShapeType::Rectangle, .width = size, .height = size, .mass = mass});
+            bodies.push_back({.shape = engine::ShapeType::Rectangle, .width = 0.01, .height = 1e5, .mass = mass});
         }
     }
     test::WorldFixture page(engine::kBookWorld);

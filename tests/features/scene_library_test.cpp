@@ -144,7 +144,9 @@ TEST_CASE("scene library: every scene sets its whole world and keeps to the 800 
         odd.positional_correction = !engine::kBookWorld.positional_correction;
         odd.remove_out_of_bounds = !engine::kBookWorld.remove_out_of_bounds;
         const engine::Scene scene = load(name);
-        browser::load_scene(kLibrary / (name + ".json"), engine::worldKeys(odd));
+        std::vector<engine::BodyDescription> bodies;
+        const browser::SceneList body_list = engine::bodyList(bodies);
+        browser::load_scene(kLibrary / (name + ".json"), engine::worldKeys(odd), {&body_list, 1});
         CHECK(odd == scene.world);
         CHECK(scene.world.movement);
         CHECK(scene.world.width == 800);
@@ -156,7 +158,7 @@ TEST_CASE("scene library: every scene sets its whole world and keeps to the 800 
         // Static bodies first, and every centre on the canvas.
         bool moving_seen = false;
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const browser::BodyDescription& body = scene.bodies[i];
+            const engine::BodyDescription& body = scene.bodies[i];
             INFO("body " << i);
             if (body.mass == 0) CHECK_FALSE(moving_seen);
             moving_seen = moving_seen || body.mass > 0;
@@ -223,9 +225,9 @@ TEST_CASE("scene library: rain: 200 shapes end piled up inside the open box") {
     // 0.8), so it stands no more than twice as high.
     double area = 0.0;
     for (std::size_t i : drops) {
-        const browser::BodyDescription& body = run.scene.bodies[i];
-        area += body.shape == browser::ShapeKind::circle ? std::numbers::pi * body.radius * body.radius
-                                                         : body.width * body.height;
+        const engine::BodyDescription& body = run.scene.bodies[i];
+        area += body.shape == engine::ShapeType::Circle ? std::numbers::pi * body.radius * body.radius
+                                                        : body.width * body.height;
     }
     const double loosest_pile = 2 * area / (inner_right - inner_left);
     run.steps(kSteps);
@@ -421,15 +423,15 @@ TEST_CASE("scene library: book_demo: the book's four platforms, and 20 shapes wi
         Vec2 center;
         double width, height, angle, friction, restitution;
     };
-    const browser::BodyDescription defaults;
+    const engine::BodyDescription defaults;
     const Platform platforms[] = {{{500, 200}, 400, 20, 2.8, 0.3, 0},
                                   {{200, 400}, 400, 20, 0, 1, 0.5},
                                   {{100, 200}, 200, 20, 0, defaults.friction, defaults.restitution},
                                   {{10, 360}, 20, 100, 0, 0, 1}};
     for (std::size_t i = 0; i < 4; ++i) {
         INFO("platform " << i);
-        const browser::BodyDescription& body = scene.bodies[i];
-        CHECK(body.shape == browser::ShapeKind::rectangle);
+        const engine::BodyDescription& body = scene.bodies[i];
+        CHECK(body.shape == engine::ShapeType::Rectangle);
         CHECK(body.mass == 0);
         CHECK(body.center == platforms[i].center);
         CHECK(body.width == platforms[i].width);
@@ -441,11 +443,11 @@ TEST_CASE("scene library: book_demo: the book's four platforms, and 20 shapes wi
     // Then, ten times, a rectangle and a circle, as the book's loop makes them.
     for (std::size_t i = 4; i < scene.bodies.size(); ++i) {
         INFO("body " << i);
-        const browser::BodyDescription& body = scene.bodies[i];
-        CHECK(body.shape == (i % 2 == 0 ? browser::ShapeKind::rectangle : browser::ShapeKind::circle));
+        const engine::BodyDescription& body = scene.bodies[i];
+        CHECK(body.shape == (i % 2 == 0 ? engine::ShapeType::Rectangle : engine::ShapeType::Circle));
         CHECK((body.center.x >= 0 && body.center.x <= 800));
         CHECK((body.center.y >= 0 && body.center.y <= 225));
-        if (body.shape == browser::ShapeKind::rectangle) {
+        if (body.shape == engine::ShapeType::Rectangle) {
             CHECK((body.width >= 10 && body.width <= 60));
             CHECK((body.height >= 10 && body.height <= 60));
         } else {

@@ -3,11 +3,14 @@
 // about 24 lines of at most 37 letters (common/page.cpp).
 #include <catch2/catch.hpp>
 
+#include <source_location>
 #include <sstream>
 #include <string>
 
 #include "book_scene.h"
+#include "checked_at.h"
 #include "circle.h"
+#include "expect.h"
 #include "my_game.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
@@ -21,9 +24,14 @@ namespace {
 constexpr std::size_t kPanelLines = 24;
 constexpr std::size_t kPanelLetters = 37;
 
-bool shows(const std::string& echo, const std::string& line) {
-    INFO("looking for \"" << line << "\" in\n" << echo);
-    return echo.find(line) != std::string::npos;
+// Checks that the echo has the line `line`, reported at the test's line with what the
+// echo holds instead.
+void shows(const std::string& echo, const std::string& line,
+           std::source_location where = std::source_location::current()) {
+    const bool found = echo.find(line) != std::string::npos;
+    std::string text = "the echo's line \"" + line.substr(0, line.size() - 1) + "\": ";
+    text += found ? "found" : "not found in the echo:\n" + echo;
+    test::checkedAt(where, "a line of the echo panel, as the book's updateUIEcho prints it", found, text);
 }
 
 }  // namespace
@@ -41,19 +49,19 @@ TEST_CASE("ui echo: the selected object's velocities, mass, friction and restitu
     if (page.core.settings().movement) page.core.toggleMovement();  // so the frame shows these numbers
     page.frame();
     const std::string& echo = page.window.document.ui_echo;
-    CHECK(shows(echo, "Id: " + std::to_string(id) + "\n"));
-    CHECK(shows(echo, "Center: 700,430\n"));
-    CHECK(shows(echo, "Velocity: 12.5,-3.00\n"));
-    CHECK(shows(echo, "Angular Velocity: 0.250\n"));
-    CHECK(shows(echo, "Mass: 2.5\n"));  // 1 / 0.400
-    CHECK(shows(echo, "Friction: 0.250\n"));
-    CHECK(shows(echo, "Restitution: 0.750\n"));
-    CHECK(shows(echo, "Movement: false\n"));
+    shows(echo, "Id: " + std::to_string(id) + "\n");
+    shows(echo, "Center: 700,430\n");
+    shows(echo, "Velocity: 12.5,-3.00\n");
+    shows(echo, "Angular Velocity: 0.250\n");
+    shows(echo, "Mass: 2.5\n");  // 1 / 0.400
+    shows(echo, "Friction: 0.250\n");
+    shows(echo, "Restitution: 0.750\n");
+    shows(echo, "Movement: false\n");
     page.press(Key::Comma);
     page.press(Key::Digit0);  // the cursor: static
     page.frame();
-    CHECK(shows(page.window.document.ui_echo, "Movement: true\n"));
-    CHECK(shows(page.window.document.ui_echo, "Mass: Infinity\n"));  // 1 / 0.00
+    shows(page.window.document.ui_echo, "Movement: true\n");
+    shows(page.window.document.ui_echo, "Mass: Infinity\n");  // 1 / 0.00
 }
 
 TEST_CASE("ui echo: the mass is 1 over the inverse mass rounded to 3 digits, as the book prints it") {
@@ -75,7 +83,7 @@ TEST_CASE("ui echo: the mass is 1 over the inverse mass rounded to 3 digits, as 
         page.core.add(engine::Circle({300, 300}, 10, {.mass = example.mass}));
         page.core.select(page.core.objectCount() - 1);
         page.frame();
-        CHECK(shows(page.window.document.ui_echo, std::string("Mass: ") + example.shown + "\n"));
+        shows(page.window.document.ui_echo, std::string("Mass: ") + example.shown + "\n");
     }
 }
 
@@ -113,14 +121,15 @@ TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
     std::size_t lines = 0;
     for (std::string line; std::getline(echo, line); ++lines) {
         INFO("line " << lines << ": \"" << line << "\"");
-        CHECK(line.size() <= kPanelLetters);
+        test::expectAtMost("letters of an echo line: at most 37, what the page's panel shows", kPanelLetters,
+                           line.size());
     }
-    CHECK(lines <= kPanelLines);
+    test::expectAtMost("lines of the echo: at most 24, what the page's panel shows", kPanelLines, lines);
     // A stage's own section (beyond the book, under the page) is as narrow.
     std::istringstream beyond(page.window.document.beyond_echo);
     for (std::string line; std::getline(beyond, line);) {
         INFO("beyond the book: \"" << line << "\"");
-        CHECK(line.size() <= kPanelLetters);
+        test::expectAtMost("letters of a line beyond the book: at most 37, as the panel's", kPanelLetters, line.size());
     }
 }
 

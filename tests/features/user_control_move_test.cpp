@@ -4,6 +4,7 @@
 #include <string>
 
 #include "book_scene.h"
+#include "expect.h"
 #include "my_game.h"
 #include "near.h"
 #include "rectangle.h"
@@ -61,10 +62,12 @@ TEST_CASE("user control: R keeps exactly the first kKeptOnReset objects and sele
     REQUIRE(page.core.objectCount() > kKept);
     page.press(Key::Down, 100);
     page.press(Key::R);
-    CHECK(page.core.objectCount() == kKept);
-    CHECK(page.core.selectedIndex() == 0);
+    test::expectEqual("objects after R: the ones of the scene R keeps (UserControl::kKeptOnReset)", kKept,
+                      page.core.objectCount());
+    test::expectEqual("the selected index after R, which removed the selected shape: object 0", 0,
+                      page.core.selectedIndex());
     page.press(Key::R);  // nothing more to remove
-    CHECK(page.core.objectCount() == kKept);
+    test::expectEqual("objects after R again: nothing more to remove", kKept, page.core.objectCount());
 }
 
 TEST_CASE("user control: a world of one object takes every key without leaving the list") {

@@ -13,6 +13,7 @@
 
 #include "circle.h"
 #include "closed_box.h"
+#include "expect.h"
 #include "near.h"
 #include "random_scene.h"
 #include "same_state.h"
@@ -26,9 +27,9 @@
 namespace world_knobs_test {
 
 namespace fs = std::filesystem;
-using browser::BodyDescription;
 using browser::Key;
-using browser::ShapeKind;
+using engine::BodyDescription;
+using engine::ShapeType;
 using engine::Vec2;
 using engine::WorldSettings;
 
@@ -77,12 +78,13 @@ double slideUntilStopped(test::WorldFixture& page, const engine::RigidShape& box
 
 TEST_CASE("world knobs: a scene file that sets no knob gets the book's engine") {
     const WorldSettings world = test::worldFromScene("{}");
-    CHECK(world == engine::kBookWorld);
-    CHECK(world.substeps == 1);
-    CHECK(world.integrator == engine::Integrator::symplectic);
-    CHECK(world.friction_model == engine::FrictionModel::book);
-    CHECK(world.rotation);
-    CHECK(world.friction);
+    test::expectEqual("a scene file that sets no knob: the book's world (kBookWorld), every setting", true,
+                      world == engine::kBookWorld);
+    test::expectEqual("its substeps: the book's one step", 1, world.substeps);
+    test::expectEqual("its integrator: the book's symplectic Euler", engine::Integrator::symplectic, world.integrator);
+    test::expectEqual("its friction model: the book's", engine::FrictionModel::book, world.friction_model);
+    test::expectEqual("its rotation switch: on", true, world.rotation);
+    test::expectEqual("its friction switch: on", true, world.friction);
 }
 
 TEST_CASE("world knobs: substeps is a whole number from 1 to 1000") {
@@ -207,9 +209,10 @@ TEST_CASE("world knobs: with sub-steps the loop still runs one step per dt of ti
         page.window.clock.advanceFrame();
         page.core.runGameLoop();
     }
-    CHECK(page.core.stepCount() == 64);
-    CHECK(ball.velocity().y == kG);
-    CHECK(ball.center().y == 100 + kG * 257 / 512);
+    test::expectEqual("steps in 64 frames", 64, page.core.stepCount());
+    test::expectEqual("the ball's vy after 64 steps of 4 sub-steps, px/s: g for one second", kG, ball.velocity().y);
+    test::expectEqual("the ball's y after 64 steps of 4 sub-steps, px: symplectic Euler over 256 sub-steps",
+                      100 + kG * 257 / 512, ball.center().y);
 }
 
 TEST_CASE("world knobs: with sub-steps a shape is removed after the sub-step that takes it off the canvas") {
@@ -229,8 +232,10 @@ TEST_CASE("world knobs: with sub-steps a shape is removed after the sub-step tha
     engine::Circle& chaser = page.core.add(engine::Circle({23.5, 200}, 10));
     chaser.setVelocity({-300, 0});
     page.steps(1);
-    REQUIRE(page.core.objectCount() == 1);
-    CHECK(chaser.velocity() == Vec2{-300, 0});
+    test::requireEqual("objects after the step: ball A removed after the sub-step that took it off the canvas", 1,
+                       page.core.objectCount());
+    test::expectEqual("ball B's velocity, px/s: it met nothing in the second sub-step", Vec2{-300, 0},
+                      chaser.velocity());
     CHECK_THAT(chaser.center(), test::near(Vec2{13.5, 200}, 1e-12));  // two moves of 5 px
 }
 
@@ -314,20 +319,20 @@ TEST_CASE("world knobs: rotation off keeps every angle and angular velocity at e
     // onto each other: with rotation they tumble (checked, so the scene does test
     // something); without it nothing turns, ever.
     std::vector<BodyDescription> bodies{
-        {.shape = ShapeKind::rectangle, .center = {400, 300}, .width = 500, .height = 20, .mass = 0, .angle = 0.3},
-        {.shape = ShapeKind::circle, .center = {250, 200}, .radius = 15, .mass = 0},
+        {.shape = ShapeType::Rectangle, .center = {400, 300}, .width = 500, .height = 20, .mass = 0, .angle = 0.3},
+        {.shape = ShapeType::Circle, .center = {250, 200}, .radius = 15, .mass = 0},
     };
     test::RandomShapes random(11);
     for (int i = 0; i < 12; ++i) {
         const Vec2 center{random.uniform(200, 600), random.uniform(20, 180)};
         if (i % 2 == 0) {
-            bodies.push_back({.shape = ShapeKind::rectangle,
+            bodies.push_back({.shape = ShapeType::Rectangle,
                               .center = center,
                               .width = random.uniform(10, 40),
                               .height = random.uniform(10, 40),
                               .mass = random.uniform(1, 10)});
         } else {
-            bodies.push_back({.shape = ShapeKind::circle, .center = center, .radius = random.uniform(5, 20)});
+            bodies.push_back({.shape = ShapeType::Circle, .center = center, .radius = random.uniform(5, 20)});
         }
     }
     for (const bool rotation : {true, false}) {
@@ -362,8 +367,9 @@ TEST_CASE("world knobs: rotation off does not turn a shape that was given a spin
     engine::Rectangle& box = page.core.add(engine::Rectangle({300, 100}, 30, 20));
     box.setAngularVelocity(2.0);
     page.steps(60);
-    CHECK(box.angle() == 0.0);
-    CHECK(box.angularVelocity() == 2.0);
+    test::expectEqual("the box's angle after 60 steps with rotation off, rad", 0.0, box.angle());
+    test::expectEqual("the box's angular velocity with rotation off, rad/s: kept, never applied", 2.0,
+                      box.angularVelocity());
     CHECK_THAT(box.velocity().y, test::near(kG, 1e-9));  // still falling for 1 s
 }
 
@@ -435,7 +441,9 @@ TEST_CASE("world knobs: with Coulomb friction a rough box bouncing in a closed b
     world.friction_model = engine::FrictionModel::coulomb;
     const double peak = test::roughBoxEnergyPeak(world);
     WARN("rough box, e = 1, coulomb friction: energy at most " << peak << " of the start");
-    CHECK(peak <= 1 + 1e-9);
+    test::expectAtMost(
+        "the rough box's kinetic energy at its peak, as a share of the start: Coulomb friction never makes energy",
+        1 + 1e-9, peak);
 }
 
 TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as a run without end (issue 15)") {
@@ -449,7 +457,7 @@ TEST_CASE("world knobs: 1000 sub-steps of 1000 passes at dt 1e-5 are refused as 
     const test::ProgramRun run =
         test::runStageProgram(folder, "--frames 1 --keys '' --scene " + test::quoted(folder.path / "scene.json") +
                                           " --out " + test::quoted(folder.path / "out"));
-    CHECK(run.status == 2);
+    test::expectEqual("the program's exit status for a run over its budget: 2, refused", 2, run.status);
     // 1,667 steps x 1000 sub-steps x (1000 x 3 pairs + 3 moves) = 5.006e9 pair tests.
     CHECK(run.error_text ==
           "the run is too long: 1 frame of up to 3 shapes may cost 5.01e+09 pair tests, more than the 5e+09 a run may "

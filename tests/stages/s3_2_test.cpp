@@ -4,6 +4,7 @@
 
 #include "book_scene.h"
 #include "circle.h"
+#include "expect.h"
 #include "physics.h"
 #include "rectangle.h"
 #include "near.h"
@@ -31,12 +32,13 @@ TEST_CASE("s3_2: the pass starts at object 0 and keeps each normal from first to
     page.core.add(engine::Rectangle({115, 100}, 50, 50));  // 2: over both, but a rectangle
     page.frame();
     const auto& found = page.core.physics().collisions();
-    REQUIRE(found.size() == 1);
-    CHECK(found[0].first == 0);
-    CHECK(found[0].second == 1);
+    test::requireEqual("pairs the pass found: the two circles (a rectangle reports nothing yet)", 1u, found.size());
+    test::expectEqual("the pair's first object: the pass starts at object 0", 0u, found[0].first);
+    test::expectEqual("the pair's second object", 1u, found[0].second);
     // From circle 0 to circle 1 is to the left.
-    CHECK(found[0].info.normal() == Vec2{-1, 0});
-    CHECK(found[0].info.depth() == 10);
+    test::expectEqual("the collision normal, from the first circle (x 130) to the second (x 100)", Vec2{-1, 0},
+                      found[0].info.normal());
+    test::expectEqual("the collision depth, px: radii 20 + 20, centres 30 apart", 10.0, found[0].info.depth());
 }
 
 TEST_CASE("s3_2: each collision is drawn as an orange line from start to end") {
@@ -48,12 +50,14 @@ TEST_CASE("s3_2: each collision is drawn as an orange line from start to end") {
     page.core.add(engine::Circle({130.5, 100.5}, 20));
     page.frame();
     const browser::Color middle = page.window.document.canvas.pixels().at(115, 100);
-    CHECK(middle == browser::colors::kOrange);
+    test::expectEqual("pixel (115, 100), the middle of the collision line from start to end", browser::colors::kOrange,
+                      middle);
     // Pulled apart, the line goes.
     page.press(browser::Key::Digit2);
     page.press(browser::Key::D, 2);
     page.frame();
-    CHECK(page.window.document.canvas.pixels().at(115, 100) == browser::colors::kWhite);
+    test::expectEqual("pixel (115, 100) once the circles are pulled apart: no line", browser::colors::kWhite,
+                      page.window.document.canvas.pixels().at(115, 100));
 }
 
 TEST_CASE("s3_2: a frame that runs no update draws no collision line") {
@@ -66,12 +70,16 @@ TEST_CASE("s3_2: a frame that runs no update draws no collision line") {
     const auto middle = [&] { return page.window.document.canvas.pixels().at(115, 100); };
     for (int k = 0; k < 3; ++k) {  // 5, 10 and 15 ms: no step yet
         page.frame();
-        CHECK(middle() == browser::colors::kWhite);
+        INFO("frame " << k << ", at " << 5 * (k + 1) << " ms");
+        test::expectEqual("the collision line's middle, pixel (115, 100), in a frame that ran no update",
+                          browser::colors::kWhite, middle());
     }
     page.frame();  // 20 ms: one step, and its pass's line
-    CHECK(middle() == browser::colors::kOrange);
+    test::expectEqual("the collision line's middle, pixel (115, 100), in the frame at 20 ms, which ran an update",
+                      browser::colors::kOrange, middle());
     page.frame();  // 25 ms: no step
-    CHECK(middle() == browser::colors::kWhite);
+    test::expectEqual("the collision line's middle, pixel (115, 100), at 25 ms: no update, no line",
+                      browser::colors::kWhite, middle());
 }
 
 // The README's walkthrough ("Play it live"): two circles 30 px apart, two rectangles.
@@ -81,11 +89,12 @@ TEST_CASE("s3_2: README walkthrough: the two circles collide, the rectangles rep
     test::playScript(page, "g d*3 g d*8 f d*2 f", 1);
     const auto& first = static_cast<const engine::Circle&>(page.core.object(5));
     const auto& second = static_cast<const engine::Circle&>(page.core.object(6));
-    REQUIRE(second.center().x - first.center().x == 30.0);
+    test::requireEqual("the distance between the two circles' centres after the walkthrough's keys, px", 30.0,
+                       second.center().x - first.center().x);
     const auto& found = page.core.physics().collisions();
-    REQUIRE(found.size() == 1);
-    CHECK(found[0].first == 5);
-    CHECK(found[0].second == 6);
+    test::requireEqual("pairs the pass found: the two circles (the rectangles report nothing yet)", 1u, found.size());
+    test::expectEqual("the pair's first object: the first circle", 5u, found[0].first);
+    test::expectEqual("the pair's second object: the second circle", 6u, found[0].second);
     // Radii of 20 px and more, 30 px apart: they overlap by the radii minus 30, along +x.
     CHECK_THAT(found[0].info.depth(), test::near(first.radius() + second.radius() - 30.0, 1e-12));
     CHECK_THAT(found[0].info.normal(), test::near(Vec2{1, 0}, 1e-12));

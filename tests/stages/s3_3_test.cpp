@@ -8,6 +8,7 @@
 #include "my_game.h"
 #include "physics.h"
 #include "rectangle.h"
+#include "expect.h"
 #include "near.h"
 #include "stage_fixture.h"
 #include "walkthrough.h"
@@ -17,9 +18,13 @@ namespace s3_3_test {
 TEST_CASE("s3_3: a rectangle and a circle still report no collision") {
     const engine::Rectangle box({100, 100}, 40, 20);
     const engine::Circle ball({100, 100}, 10);
-    CHECK_FALSE(box.collisionTest(ball).has_value());
-    CHECK_FALSE(ball.collisionTest(box).has_value());
-    CHECK_FALSE(engine::findCollision(ball, box).has_value());
+    // A circle at the rectangle's centre: 3.4 finds it, 3.3 must not yet.
+    test::expectEqual("a collision of the rectangle with the circle (rectangle.collisionTest(circle)): none until 3.4",
+                      false, box.collisionTest(ball).has_value());
+    test::expectEqual("a collision of the circle with the rectangle (circle.collisionTest(rectangle)): none until 3.4",
+                      false, ball.collisionTest(box).has_value());
+    test::expectEqual("a collision the pass finds for the circle and the rectangle: none until 3.4", false,
+                      engine::findCollision(ball, box).has_value());
 }
 
 TEST_CASE("s3_3: the borders of the book's scene overlap at the four corners of the canvas") {
@@ -42,15 +47,21 @@ TEST_CASE("s3_3: README walkthrough: the collision line of two rectangles follow
     };
     test::playScript(page, "f d f", 30);
     const auto before = info_of();
-    REQUIRE(before.has_value());
+    test::requireEqual("a collision of the two new rectangles (objects 5 and 6, 10 px apart, centre to centre)", true,
+                       before.has_value());
     // Axis-aligned boxes side by side on one line: the normal is +x.
     CHECK_THAT(before->normal(), test::near(engine::Vec2{1, 0}, 1e-12));
     test::playScript(page, "6 e*3", 30);
     const auto after = info_of();
-    REQUIRE(after.has_value());
+    test::requireEqual("a collision of the two rectangles once the second is turned by 0.3 rad", true,
+                       after.has_value());
     // Turned by 0.3 rad, the second box reaches into the first with a corner: the line
     // (its start, its depth) is no longer the one before.
-    CHECK((after->start() != before->start() || after->depth() != before->depth()));
+    INFO("the collision line before the turn: start "
+         << Catch::Detail::stringify(before->start()) << ", depth " << before->depth() << "; after: start "
+         << Catch::Detail::stringify(after->start()) << ", depth " << after->depth());
+    test::expectEqual("the collision line (its start or its depth) changed by turning the second rectangle", true,
+                      after->start() != before->start() || after->depth() != before->depth());
 }
 
 }  // namespace s3_3_test

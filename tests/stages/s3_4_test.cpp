@@ -5,7 +5,9 @@
 #include <optional>
 
 #include "book_scene.h"
+#include "collision_checks.h"
 #include "collision_info.h"
+#include "expect.h"
 #include "physics.h"
 #include "stage_fixture.h"
 #include "walkthrough.h"
@@ -34,17 +36,24 @@ TEST_CASE("s3_4: README walkthrough: turning the circle leaves the line, turning
     test::buildBookScene(page.core, page.random);
     test::playScript(page, "f d*3 g", 30);
     const auto start = infoOf(page.core.physics(), 5, 6);
-    REQUIRE(start.has_value());
+    test::requireEqual("a collision of the rectangle (object 5) and the circle (6) 30 px to its right", true,
+                       start.has_value());
     // Only the circle's centre and radius count: not a bit of the info changes.
     test::playScript(page, "6 e*5", 30);
     const auto circle_turned = infoOf(page.core.physics(), 5, 6);
-    REQUIRE(circle_turned.has_value());
-    CHECK(same(*circle_turned, *start));
+    test::requireEqual("a collision of the rectangle and the circle once the circle is turned", true,
+                       circle_turned.has_value());
+    INFO("before: " << Catch::Detail::stringify(*start) << "; after: " << Catch::Detail::stringify(*circle_turned));
+    test::expectEqual("the collision info, unchanged when the circle turns (only its centre and radius count)", true,
+                      same(*circle_turned, *start));
     // The rectangle's faces do count.
     test::playScript(page, "5 e*3", 30);
     const auto box_turned = infoOf(page.core.physics(), 5, 6);
-    REQUIRE(box_turned.has_value());
-    CHECK_FALSE(same(*box_turned, *start));
+    test::requireEqual("a collision of the rectangle and the circle once the rectangle is turned", true,
+                       box_turned.has_value());
+    INFO("before: " << Catch::Detail::stringify(*start) << "; after: " << Catch::Detail::stringify(*box_turned));
+    test::expectEqual("the collision info, changed when the rectangle turns (its faces count)", false,
+                      same(*box_turned, *start));
 }
 
 }  // namespace s3_4_test

@@ -9,6 +9,7 @@
 #include "book_scene.h"
 #include "circle.h"
 #include "my_game.h"
+#include "expect.h"
 #include "near.h"
 #include "platform_check.h"
 #include "rectangle.h"
@@ -23,9 +24,11 @@ TEST_CASE("s4_3: the scene has a static, gripping, dead platform at (200, 400), 
     // The book's MyGame.js order: the cursor, the platform, then the four borders.
     test::WorldFixture page(test::world(true));
     test::buildBookScene(page.core, page.random);
-    REQUIRE(page.core.objectCount() == 6);
-    REQUIRE(engine::UserControl::kKeptOnReset == 6);
-    CHECK(page.core.object(0).center() == Vec2{400, 225});
+    test::requireEqual("objects of the book's scene: the cursor, the platform, the four borders", 6u,
+                       page.core.objectCount());
+    test::requireEqual("objects R keeps (UserControl::kKeptOnReset): the six of the scene", 6u,
+                       engine::UserControl::kKeptOnReset);
+    test::expectEqual("the cursor's centre (object 0), px", Vec2{400, 225}, page.core.object(0).center());
     test::checkPlatform(page.core.object(1), {.center = {200, 400}, .friction = 1, .restitution = 0});
     test::checkBorders(page.core, 2);
 }
@@ -40,8 +43,10 @@ TEST_CASE("s4_3: a circle dropped on the platform comes to rest on it") {
     // (extremes_test: g dt^2 / (1 + e)).
     const double resting = engine::kGravity.y * engine::kFrameTime * engine::kFrameTime;
     CHECK_THAT(ball.center().y, test::near(370 + resting, 1e-9));
-    CHECK(ball.center().x == 100);
-    CHECK(std::abs(ball.velocity().y) < 0.2);  // what gravity adds back in one step
+    test::expectEqual("the ball's x, px: it falls straight", 100.0, ball.center().x);
+    // what gravity adds back in one step
+    test::expectAtMost("the resting ball's vertical speed |vy|, px/s: about one step of gravity, g dt = 0.17", 0.2,
+                       std::abs(ball.velocity().y));
 }
 
 TEST_CASE("s4_3: an off-centre hit changes velocities only; nothing turns") {
@@ -50,10 +55,12 @@ TEST_CASE("s4_3: an off-centre hit changes velocities only; nothing turns") {
     engine::Circle& ball = page.core.add(engine::Circle({229, 195}, 10, {1, 0.5, 0.5}));
     ball.setVelocity({-50, 0});
     page.steps(10);
-    CHECK(box.velocity().x < 0);
-    CHECK(box.angularVelocity() == 0);
-    CHECK(box.angle() == 0);
-    CHECK(ball.angularVelocity() == 0);
+    test::expectAtMost("the box's vx after the ball hits it from the right, px/s: pushed left", -1e-9,
+                       box.velocity().x);
+    test::expectEqual("the box's angular velocity, rad/s: impulses act through the centres in 4.3", 0.0,
+                      box.angularVelocity());
+    test::expectEqual("the box's angle, rad", 0.0, box.angle());
+    test::expectEqual("the ball's angular velocity, rad/s", 0.0, ball.angularVelocity());
 }
 
 TEST_CASE("s4_3: a ball hitting a floor at a slant: e and mu of the less bouncy, less gripping surface") {
@@ -81,22 +88,27 @@ TEST_CASE("s4_3: README walkthrough: the shapes land on the platform, slow down,
     const std::vector<test::DumpRow> rows =
         test::runWalkthrough(folder, "comma a*20 s*8 g 6 k*100 0 d*8 f 7 k*100 0 w*10 h@120", 240);
     const auto state = [&rows](long step, std::size_t index) { return test::stateAt(rows, step, index); };
-    REQUIRE(state(1, 6).shape == "circle");
-    REQUIRE(state(1, 7).shape == "rectangle");
+    test::requireEqual("object 6 of the walkthrough (G)", std::string("circle"), state(1, 6).shape);
+    test::requireEqual("object 7 of the walkthrough (F)", std::string("rectangle"), state(1, 7).shape);
     // Impulses act through the centres in this project: nothing ever turns.
     for (const test::DumpRow& row : rows) {
-        CHECK(row.angle == 0.0);
-        CHECK(row.angular_velocity == 0.0);
+        INFO("object " << row.index << " (" << row.shape << ") at step " << row.step);
+        test::expectEqual("its angle, rad: impulses act through the centres in 4.3", 0.0, row.angle);
+        test::expectEqual("its angular velocity, rad/s", 0.0, row.angular_velocity);
     }
     // The platform's top is at y = 400 - 10. At step 60 both rest on it: above it, and
     // their vertical speed is the one step of gravity, g dt = 10/60 px/s, that the
     // contact takes away again each step.
     for (const std::size_t shape : {std::size_t{6}, std::size_t{7}}) {
-        CHECK(state(60, shape).cy < 390.0);
+        INFO("object " << shape << " (6 the circle, 7 the box)");
+        test::expectAtMost("its centre's y at step 60, px: above the platform's top, y = 390", 390.0 - 1e-9,
+                           state(60, shape).cy);
         CHECK_THAT(state(60, shape).vy, test::near(10.0 / 60.0, 1e-9));
         CHECK_THAT(state(119, shape).vy, test::near(10.0 / 60.0, 1e-9));
         // Friction slows the sliding between landing and H.
-        CHECK(std::abs(state(119, shape).vx) < std::abs(state(30, shape).vx));
+        INFO("|vx| at step 30: " << std::abs(state(30, shape).vx) << " px/s");
+        test::expectAtMost("its sideways speed |vx| at step 119, px/s: friction slowed it since step 30",
+                           std::abs(state(30, shape).vx) - 1e-12, std::abs(state(119, shape).vx));
     }
 }
 

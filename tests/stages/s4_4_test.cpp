@@ -8,6 +8,7 @@
 
 #include "book_scene.h"
 #include "circle.h"
+#include "expect.h"
 #include "near.h"
 #include "my_game.h"
 #include "platform_check.h"
@@ -23,9 +24,11 @@ TEST_CASE("s4_4: the scene has two turned static platforms, kept by a reset") {
     // The book's MyGame.js order: the cursor, the two platforms, then the four borders.
     test::WorldFixture page(test::world(true));
     test::buildBookScene(page.core, page.random);
-    REQUIRE(page.core.objectCount() == 7);
-    REQUIRE(engine::UserControl::kKeptOnReset == 7);
-    CHECK(page.core.object(0).center() == Vec2{400, 225});
+    test::requireEqual("objects of the book's scene: the cursor, two platforms, the four borders", 7u,
+                       page.core.objectCount());
+    test::requireEqual("objects R keeps (UserControl::kKeptOnReset): the seven of the scene", 7u,
+                       engine::UserControl::kKeptOnReset);
+    test::expectEqual("the cursor's centre (object 0), px", Vec2{400, 225}, page.core.object(0).center());
     test::checkPlatform(page.core.object(1), {.center = {500, 200}, .angle = 3.0});
     test::checkPlatform(page.core.object(2), {.center = {200, 400}, .angle = 0.785, .friction = 1, .restitution = 0});
     test::checkBorders(page.core, 3);
@@ -44,7 +47,7 @@ TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it at 2/3 g s
     test::buildBookScene(page.core, page.random);
     engine::Circle& ball = page.core.add(engine::Circle({150, 300}, 15));
     const double slope = page.core.object(2).angle();
-    REQUIRE(slope == 0.785);
+    test::requireEqual("the steep platform's angle (object 2), rad", 0.785, slope);
     const Vec2 downhill{std::cos(slope), std::sin(slope)};
     const Vec2 out_of_slope{std::sin(slope), -std::cos(slope)};
     const double g = engine::kGravity.y;
@@ -55,9 +58,13 @@ TEST_CASE("s4_4: a circle dropped on the steep platform rolls down it at 2/3 g s
         page.steps(1);
         const double along = ball.velocity().dot(downhill);
         INFO("step " << step + 1 << ": " << along << " px/s along the slope, w r = " << ball.angularVelocity() * 15);
-        REQUIRE(std::abs(ball.velocity().dot(out_of_slope)) <= g * dt);
+        const bool on_the_slope =
+            test::expectAtMost("the ball's speed across the slope, px/s: no more than a resting shape sinks, g dt",
+                               g * dt, std::abs(ball.velocity().dot(out_of_slope)));
         // Turning clockwise on screen (w > 0), as rolling down to the right does.
-        REQUIRE(std::abs(ball.angularVelocity() * ball.radius() - along) <= 0.5);
+        const bool rolling = test::expectAtMost("the slip |w r - v along the slope|, px/s: rolling, not sliding", 0.5,
+                                                std::abs(ball.angularVelocity() * ball.radius() - along));
+        if (!on_the_slope || !rolling) break;  // the first step that fails says enough
     }
     const double acceleration = (ball.velocity().dot(downhill) - speed_at_2_5s) / (300 * dt);
     CHECK_THAT(acceleration, test::near(2.0 / 3 * g * std::sin(slope), 0.01 * 2.0 / 3 * g * std::sin(slope)));
@@ -73,19 +80,22 @@ TEST_CASE("s4_4: README walkthrough: the circle lands and rolls, the box turns a
         test::runWalkthrough(folder, "comma a*20 s*8 g 7 k*100 0 a*4 w*4 f 8 k*100 0 w*10", 240);
     const auto state = [&rows](long step, std::size_t index) { return test::stateAt(rows, step, index); };
     const long last = rows.back().step;
-    REQUIRE(state(1, 7).shape == "circle");
-    REQUIRE(state(1, 8).shape == "rectangle");
+    test::requireEqual("object 7 of the walkthrough (G)", std::string("circle"), state(1, 7).shape);
+    test::requireEqual("object 8 of the walkthrough (F)", std::string("rectangle"), state(1, 8).shape);
     // Gravity pulls through the centre and turns nothing: while a shape flies free its
     // angular velocity stays exactly 0 and its angle exactly where it was made.
-    CHECK(state(1, 7).angular_velocity == 0.0);
-    CHECK(state(1, 8).angle == 0.0);
+    test::expectEqual("the circle's angular velocity at step 1, flying free, rad/s", 0.0, state(1, 7).angular_velocity);
+    test::expectEqual("the box's angle at step 1, flying free, rad", 0.0, state(1, 8).angle);
     // The circle falls some 80 px to the slope at about 120 px/s, which takes more than
     // half a second: at step 10 (a sixth of a second) it is still free.
-    CHECK(state(10, 7).angular_velocity == 0.0);
+    test::expectEqual("the circle's angular velocity at step 10, still in the air, rad/s", 0.0,
+                      state(10, 7).angular_velocity);
     // It has landed and rolls: at the end it spins at over half a radian a second.
-    CHECK(std::abs(state(last, 7).angular_velocity) > 0.5);
+    test::expectAtLeast("the circle's spin |w| at the end, rad/s: landed on the slope and rolling", 0.5 + 1e-12,
+                        std::abs(state(last, 7).angular_velocity));
     // The box has turned by more than half a radian in its landing.
-    CHECK(std::abs(state(last, 8).angle) > 0.5);
+    test::expectAtLeast("the box's |angle| at the end, rad: turned by its landing on a corner", 0.5 + 1e-12,
+                        std::abs(state(last, 8).angle));
 }
 
 }  // namespace s4_4_test

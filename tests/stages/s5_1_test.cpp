@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "circle.h"
+#include "expect.h"
 #include "image_compare.h"
 #include "near.h"
 #include "png_io.h"
@@ -38,7 +39,7 @@ double turnOf(const engine::Rectangle& box) {
 TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
     test::WorldFixture page(engine::kBookWorld);
     test::buildBookScene(page.core, page.random);
-    REQUIRE(page.core.objectCount() == 4 + 20);
+    test::requireEqual("objects of the demo: four platforms and twenty random shapes", 4 + 20, page.core.objectCount());
 
     struct Platform {
         Vec2 center;
@@ -53,19 +54,21 @@ TEST_CASE("s5_1: the demo's scene is the book's MyGame") {
     for (std::size_t i = 0; i < 4; ++i) {
         INFO("platform " << i);
         const auto& box = dynamic_cast<const engine::Rectangle&>(page.core.object(i));
-        CHECK(box.isStatic());
-        CHECK(box.center() == platforms[i].center);
-        CHECK(box.width() == platforms[i].width);
-        CHECK(box.height() == platforms[i].height);
+        test::expectEqual("static (mass 0)", true, box.isStatic());
+        test::expectEqual("its centre, px", platforms[i].center, box.center());
+        test::expectEqual("its width, px", platforms[i].width, box.width());
+        test::expectEqual("its height, px", platforms[i].height, box.height());
         CHECK_THAT(turnOf(box), test::near(platforms[i].angle, 1e-12));  // atan2 of a turned normal: rounding
-        CHECK(box.friction() == platforms[i].friction);
-        CHECK(box.restitution() == platforms[i].restitution);
+        test::expectEqual("its friction", platforms[i].friction, box.friction());
+        test::expectEqual("its restitution", platforms[i].restitution, box.restitution());
     }
-    CHECK(page.core.settings().gravity == Vec2{0, 20});
-    CHECK(page.core.settings().movement);
-    CHECK(page.core.settings().remove_out_of_bounds);
-    CHECK(engine::UserControl::kKeptOnReset == 7);
-    CHECK(engine::UserControl::kExciteSpeed == 250);
+    test::expectEqual("the demo's gravity, px/s^2: the book's 5.1 doubles chapter 4's (0, 10)", Vec2{0, 20},
+                      page.core.settings().gravity);
+    test::expectEqual("movement as the demo starts: on", true, page.core.settings().movement);
+    test::expectEqual("remove_out_of_bounds in the demo: on (the book removes shapes that leave the canvas)", true,
+                      page.core.settings().remove_out_of_bounds);
+    test::expectEqual("objects R keeps (UserControl::kKeptOnReset)", 7, engine::UserControl::kKeptOnReset);
+    test::expectEqual("H's kick, px/s a component (UserControl::kExciteSpeed)", 250, engine::UserControl::kExciteSpeed);
 }
 
 TEST_CASE("s5_1: the twenty random shapes are the book's, drawn in its order") {
@@ -75,28 +78,30 @@ TEST_CASE("s5_1: the twenty random shapes are the book's, drawn in its order") {
         test::buildBookScene(page.core, page.random);
         browser::Random book(seed);  // the same Math.random, drawn by hand
         const std::vector<test::DemoShape> shapes = test::demoShapesAsTheBookDraws(book);
-        REQUIRE(page.core.objectCount() == 4 + shapes.size());
+        test::requireEqual("objects of the demo: four platforms and the twenty random shapes", 4 + shapes.size(),
+                           page.core.objectCount());
         for (std::size_t k = 0; k < shapes.size(); ++k) {
             INFO("random shape " << k);
             const test::DemoShape& expected = shapes[k];
             const engine::RigidShape& shape = page.core.object(4 + k);
-            CHECK(shape.center() == expected.center);
+            test::expectEqual("its centre, px: the book's random numbers, drawn in its order", expected.center,
+                              shape.center());
             if (expected.is_box) {
                 const auto* box = dynamic_cast<const engine::Rectangle*>(&shape);
                 REQUIRE(box != nullptr);
-                CHECK(box->width() == expected.width);
-                CHECK(box->height() == expected.height);
+                test::expectEqual("its width, px", expected.width, box->width());
+                test::expectEqual("its height, px", expected.height, box->height());
             } else {
                 const auto* ball = dynamic_cast<const engine::Circle*>(&shape);
                 REQUIRE(ball != nullptr);
-                CHECK(ball->radius() == expected.radius);
+                test::expectEqual("its radius, px", expected.radius, ball->radius());
             }
             // The shape keeps 1/m: m comes back to within a rounding or two of 30 (1e-13).
             CHECK_THAT(shape.mass(), test::near(expected.mass, 1e-13));
-            CHECK(shape.friction() == expected.friction);
-            CHECK(shape.restitution() == expected.restitution);
-            CHECK(shape.velocity() == expected.velocity);
-            CHECK(shape.angularVelocity() == 0);
+            test::expectEqual("its friction", expected.friction, shape.friction());
+            test::expectEqual("its restitution", expected.restitution, shape.restitution());
+            test::expectEqual("its velocity, px/s", expected.velocity, shape.velocity());
+            test::expectEqual("its angular velocity, rad/s", 0, shape.angularVelocity());
         }
     }
 }
@@ -109,39 +114,41 @@ TEST_CASE("s5_1: the random shapes stay within the book's ranges over many seeds
         for (std::size_t i = 4; i < page.core.objectCount(); ++i) {
             const engine::RigidShape& shape = page.core.object(i);
             // Rectangles and circles take turns, a rectangle first.
-            CHECK(shape.type() == (i % 2 == 0 ? engine::ShapeType::Rectangle : engine::ShapeType::Circle));
-            CHECK(shape.center().x >= 0);
-            CHECK(shape.center().x < 800);
-            CHECK(shape.center().y >= 0);
-            CHECK(shape.center().y < 225);  // the top half
-            CHECK(shape.mass() < 30);
-            CHECK(shape.friction() < 1);
-            CHECK(shape.restitution() < 1);
-            CHECK(std::abs(shape.velocity().x) <= 30);
-            CHECK(std::abs(shape.velocity().y) <= 30);
+            test::expectEqual("a random shape's kind: rectangles and circles take turns, a rectangle first",
+                              (i % 2 == 0 ? engine::ShapeType::Rectangle : engine::ShapeType::Circle), shape.type());
+            test::expectAtLeast("a random shape's x, px: at least 0", 0, shape.center().x);
+            test::expectBelow("a random shape's x, px: below 800", 800, shape.center().x);
+            test::expectAtLeast("a random shape's y, px: at least 0", 0, shape.center().y);
+            // the top half
+            test::expectBelow("a random shape's y, px: in the top half, below 225", 225, shape.center().y);
+            test::expectBelow("a random shape's mass: below 30", 30, shape.mass());
+            test::expectBelow("a random shape's friction: below 1", 1, shape.friction());
+            test::expectBelow("a random shape's restitution: below 1", 1, shape.restitution());
+            test::expectAtMost("a random shape's |vx|, px/s: at most 30", 30, std::abs(shape.velocity().x));
+            test::expectAtMost("a random shape's |vy|, px/s: at most 30", 30, std::abs(shape.velocity().y));
             largest_mass = std::max(largest_mass, shape.mass());
             if (const auto* box = dynamic_cast<const engine::Rectangle*>(&shape)) {
                 for (double side : {box->width(), box->height()}) {
-                    CHECK(side >= 10);
-                    CHECK(side < 60);
+                    test::expectAtLeast("a random rectangle's side, px: at least 10", 10, side);
+                    test::expectBelow("a random rectangle's side, px: below 60", 60, side);
                     smallest_side = std::min(smallest_side, side);
                     largest_side = std::max(largest_side, side);
                 }
             } else {
                 const auto& ball = dynamic_cast<const engine::Circle&>(shape);
-                CHECK(ball.radius() >= 10);
-                CHECK(ball.radius() < 30);
+                test::expectAtLeast("a random circle's radius, px: at least 10", 10, ball.radius());
+                test::expectBelow("a random circle's radius, px: below 30", 30, ball.radius());
                 smallest_radius = std::min(smallest_radius, ball.radius());
                 largest_radius = std::max(largest_radius, ball.radius());
             }
         }
     }
     // 4,000 uniform draws each reach within half a percent of both ends of their range.
-    CHECK(smallest_side < 10.5);
-    CHECK(largest_side > 59.5);
-    CHECK(smallest_radius < 10.5);
-    CHECK(largest_radius > 29.5);
-    CHECK(largest_mass > 29.5);
+    test::expectBelow("the smallest random side over 200 seeds, px: near the range's 10", 10.5, smallest_side);
+    test::expectAbove("the largest random side over 200 seeds, px: near the range's 60", 59.5, largest_side);
+    test::expectBelow("the smallest random radius over 200 seeds, px: near 10", 10.5, smallest_radius);
+    test::expectAbove("the largest random radius over 200 seeds, px: near 30", 29.5, largest_radius);
+    test::expectAbove("the largest random mass over 200 seeds: near 30", 29.5, largest_mass);
 }
 
 TEST_CASE("s5_1: a shape leaving the canvas is gone in the step it leaves, and the shape after it keeps its step") {
@@ -154,12 +161,14 @@ TEST_CASE("s5_1: a shape leaving the canvas is gone in the step it leaves, and t
     page.core.add(engine::Circle({300, 100}, 5));
     leaving.setVelocity({60, 0});
     page.steps(1);  // it moves to x = 800.5, outside: removed at the end of this step
-    REQUIRE(page.core.objectCount() == 2);
+    test::requireEqual("objects after the step: the ball that crossed the right edge removed", 2,
+                       page.core.objectCount());
     const double fallen = engine::kGravity.y * engine::kFrameTime * engine::kFrameTime;
-    CHECK(left.center().y == 100 + fallen);
+    test::expectEqual("the first ball's y after the step, px: g dt^2 lower", 100 + fallen, left.center().y);
     // The ball after it (the book's loop would have skipped its update) fell as far.
-    CHECK(page.core.object(1).center().x == 300);
-    CHECK(page.core.object(1).center().y == 100 + fallen);
+    test::expectEqual("the third ball's x, px", 300, page.core.object(1).center().x);
+    test::expectEqual("the third ball's y, px: it took its step too (the book's loop skips it)", 100 + fallen,
+                      page.core.object(1).center().y);
 }
 
 TEST_CASE("s5_1: a shape moved off the canvas with movement off is removed at the next step") {
@@ -171,10 +180,10 @@ TEST_CASE("s5_1: a shape moved off the canvas with movement off is removed at th
     page.core.add(engine::Circle({10, 100}, 5));
     page.core.select(1);
     page.press(browser::Key::A, 2);  // 20 px to the left: its centre at x = -10
-    REQUIRE(page.core.objectCount() == 2);
+    test::requireEqual("objects before the step: both still there", 2, page.core.objectCount());
     page.steps(1);
-    REQUIRE(page.core.objectCount() == 1);
-    CHECK(page.core.object(0).center() == Vec2{100, 100});
+    test::requireEqual("objects after the step: the one moved off the canvas removed", 1, page.core.objectCount());
+    test::expectEqual("the remaining ball's centre, px", Vec2{100, 100}, page.core.object(0).center());
 }
 
 TEST_CASE("s5_1: when the selected shape is removed, object 0 is selected (the book's page stops)") {
@@ -186,13 +195,15 @@ TEST_CASE("s5_1: when the selected shape is removed, object 0 is selected (the b
     leaving.setVelocity({60, 0});
     page.core.select(1);
     page.steps(2);  // out of the canvas in the first step, removed in the second
-    REQUIRE(page.core.objectCount() == 1);
-    CHECK(page.core.selectedIndex() == 0);
+    test::requireEqual("objects after two steps: the leaving ball removed", 1, page.core.objectCount());
+    test::expectEqual("the selected index once the selected shape is gone: object 0", 0, page.core.selectedIndex());
     page.core.runGameLoop();  // the page goes on: the echo shows the ledge
-    CHECK(page.window.document.ui_echo.find("Id: 0\n") != std::string::npos);
-    CHECK(page.window.document.ui_echo.find("Center: 400,300\n") != std::string::npos);
+    test::expectEqual("the echo's line \"Id: 0\"", true,
+                      page.window.document.ui_echo.find("Id: 0\n") != std::string::npos);
+    test::expectEqual("the echo's line \"Center: 400,300\": the ledge", true,
+                      page.window.document.ui_echo.find("Center: 400,300\n") != std::string::npos);
     page.press(browser::Key::W);  // and the keys act on it
-    CHECK(ledge.center() == Vec2{400, 290});
+    test::expectEqual("the ledge's centre after W, px: the keys act on it", Vec2{400, 290}, ledge.center());
 }
 
 TEST_CASE("s5_1: the same seed gives the same run, another seed another") {
@@ -203,18 +214,18 @@ TEST_CASE("s5_1: the same seed gives the same run, another seed another") {
                                       test::quoted(folder.path / (name + ".csv"));
         const test::ProgramRun result = test::runStageProgram(folder, arguments);
         INFO(result.error_text);
-        REQUIRE(result.status == 0);
+        test::requireEqual("the program's exit status (0: the run succeeded)", 0, result.status);
         return test::readText(folder.path / (name + ".csv"));
     };
     const std::string first = run("first", 11), again = run("again", 11), other = run("other", 12);
-    CHECK(first == again);
-    CHECK(first != other);
+    test::expectEqual("the state dumps of two runs with seed 11: the same", again, first);
+    test::expectEqual("the state dumps of seeds 11 and 12: different", true, first != other);
     for (const char* picture : {"final.png", "frame_0045.png", "contact_sheet.png"}) {
         INFO(picture);
         const auto difference = browser::compare_images(browser::read_png(folder.path / "first" / picture),
                                                         browser::read_png(folder.path / "again" / picture), {});
-        CHECK(difference.same_size);
-        CHECK(difference.differing_pixels == 0);
+        test::expectEqual("the two runs' pictures: the same size", true, difference.same_size);
+        test::expectEqual("pixels that differ between the two runs' pictures", 0, difference.differing_pixels);
     }
 }
 
@@ -222,16 +233,16 @@ TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
     const test::ScratchFolder folder("s5_1_gif");
     const test::ProgramRun result =
         test::runStageProgram(folder, "--frames 20 --every 0 --out " + test::quoted(folder.path / "out"));
-    REQUIRE(result.status == 0);
+    test::requireEqual("the program's exit status (0: the run succeeded)", 0, result.status);
     const std::string gif = test::readText(folder.path / "out" / "animation.gif");
     REQUIRE(gif.size() > 10);
-    CHECK(gif.substr(0, 6) == "GIF89a");
+    test::expectEqual("the GIF's signature", "GIF89a", gif.substr(0, 6));
     // The logical screen: width and height, little-endian, right after the signature.
     const auto u16 = [&](std::size_t at) {
         return static_cast<unsigned char>(gif[at]) | static_cast<unsigned char>(gif[at + 1]) << 8;
     };
-    CHECK(u16(6) == 800 + browser::kPanelWidth);
-    CHECK(u16(8) == 450);
+    test::expectEqual("the GIF's width, px: the canvas and the echo panel", 800 + browser::kPanelWidth, u16(6));
+    test::expectEqual("the GIF's height, px", 450, u16(8));
 }
 
 TEST_CASE(
@@ -247,7 +258,7 @@ TEST_CASE(
     const test::ProgramRun run =
         test::runStageProgram(folder, "--keys \"f*3 g*3 h@120\" --frames 240 --every 0 --no-gif --out " +
                                           test::quoted(folder.path / "out") + " --dump " + test::quoted(dump));
-    REQUIRE(run.status == 0);
+    test::requireEqual("the program's exit status (0: the run succeeded)", 0, run.status);
     const std::vector<test::DumpRow> rows = test::readDump(dump);
     const auto at = [&](long step) {
         std::vector<test::DumpRow> found;
@@ -256,7 +267,8 @@ TEST_CASE(
         return found;
     };
     const std::vector<test::DumpRow> start = at(0), first = at(1);
-    REQUIRE(first.size() == start.size() + 6);
+    test::requireEqual("dump rows at step 1: six more than at step 0 (F and G three times each)", start.size() + 6,
+                       first.size());
     for (std::size_t k = 0; k < 6; ++k) CHECK(first[start.size() + k].shape == (k < 3 ? "rectangle" : "circle"));
 
     // H draws a new velocity u for each moving shape, whatever its velocity v was: u
@@ -277,8 +289,9 @@ TEST_CASE(
     const double before = shareChanged(at(118), at(119)), kicked = shareChanged(at(119), at(120));
     INFO("share of moving shapes whose velocity changed by over 50 px/s: " << before << " before H, " << kicked
                                                                            << " in its step");
-    CHECK(kicked > 0.9);
-    CHECK(before < 0.5);
+    test::expectAbove("the share of moving shapes whose velocity changed by over 50 px/s in the step of H", 0.9,
+                      kicked);
+    test::expectBelow("the same share in the step before H", 0.5, before);
 
     // The mean length of a velocity uniform in the square is 250 (sqrt 2 + ln(1 + sqrt 2)) / 3 = 191 px/s.
     double sum = 0.0;

@@ -14,6 +14,7 @@
 
 #include "circle.h"
 #include "contact_manifold.h"
+#include "expect.h"
 #include "near.h"
 #include "rectangle.h"
 #include "scene_io.h"
@@ -73,14 +74,15 @@ TEST_CASE("s5_4: the solver is the book's unless the scene says sequential_impul
         R"({"solver": "sequential_impulse", "velocity_iterations": 5, "position_iterations": 2,
             "warm_starting": false, "restitution_threshold": 12.5, "position_method": "split_impulse",
             "position_rate": 0.3, "slop": 0.25})");
-    CHECK(world.solver == engine::SolverKind::sequential_impulse);
-    CHECK(world.velocity_iterations == 5);
-    CHECK(world.position_iterations == 2);
-    CHECK_FALSE(world.warm_starting);
-    CHECK(world.restitution_threshold == 12.5);
-    CHECK(world.position_method == engine::PositionMethod::split_impulse);
-    CHECK(world.position_rate == 0.3);
-    CHECK(world.slop == 0.25);
+    test::expectEqual("the scene's solver, as read", engine::SolverKind::sequential_impulse, world.solver);
+    test::expectEqual("the scene's velocity_iterations, as read", 5, world.velocity_iterations);
+    test::expectEqual("the scene's position_iterations, as read", 2, world.position_iterations);
+    test::expectEqual("the scene's warm_starting, as read", false, world.warm_starting);
+    test::expectEqual("the scene's restitution_threshold, as read, px/s", 12.5, world.restitution_threshold);
+    test::expectEqual("the scene's position_method, as read", engine::PositionMethod::split_impulse,
+                      world.position_method);
+    test::expectEqual("the scene's position_rate, as read", 0.3, world.position_rate);
+    test::expectEqual("the scene's slop, as read, px", 0.25, world.slop);
     CHECK_THROWS_AS(solverWorld(R"(, "velocity_iterations": 0)"), browser::SceneError);
     CHECK_THROWS_AS(solverWorld(R"(, "slop": -1)"), browser::SceneError);
     CHECK_THROWS_AS(solverWorld(R"(, "restitution_threshold": -1)"), browser::SceneError);
@@ -139,7 +141,7 @@ TEST_CASE("s5_4: a box standing on one corner touches at one point; a circle at 
     const auto corner = engine::narrowPhase(floor, box);
     REQUIRE(corner);
     const engine::ContactManifold on_corner = engine::contactManifold(floor, box, *corner);
-    REQUIRE(on_corner.points.size() == 1);
+    test::requireEqual("contact points of a box standing on its corner: one", 1, on_corner.points.size());
     CHECK_THAT(on_corner.points[0].position, test::near(Vec2{50, 100.25}, 1e-9));
     CHECK_THAT(on_corner.points[0].depth, test::near(0.5, 1e-9));
 
@@ -282,9 +284,10 @@ TEST_CASE("s5_4: a contact pushes and never pulls: a shape leaving the floor kee
     ball.setVelocity({0, -10});
     page.steps(1);
     REQUIRE(page.core.physics().collisions().size() == 2);
-    CHECK(box.velocity() == Vec2{0, -10});
-    CHECK(ball.velocity() == Vec2{0, -10});
-    CHECK(box.angularVelocity() == 0.0);
+    test::expectEqual("the box's velocity after a step, moving away from the floor, px/s: the solver leaves it",
+                      Vec2{0, -10}, box.velocity());
+    test::expectEqual("the ball's velocity after a step, moving away, px/s", Vec2{0, -10}, ball.velocity());
+    test::expectEqual("the box's angular velocity, rad/s", 0.0, box.angularVelocity());
 
     // Moving in at 10 px/s, the same two are stopped dead (e = 0.2 of a slow contact
     // is no bounce), the box on both points without turning.
@@ -315,13 +318,14 @@ TEST_CASE("s5_4: a fast impact bounces at e times its speed; below the threshold
             ++bounces;
             const double impact = before + kG * kDt;
             INFO("impact at " << impact << " px/s");
-            CHECK(impact > 30.0);
+            test::expectAbove("the speed of a bounce's impact, px/s: above the restitution threshold", 30.0, impact);
             CHECK_THAT(ball.velocity().y, test::near(-0.5 * impact, 1e-9));
         }
     }
     // A fall of 210 px meets the floor at about sqrt(2 g 210) = 92 px/s, then 46; the
     // third impact, at about 23 px/s, is under the threshold.
-    CHECK(bounces == 2);
+    test::expectEqual("bounces before the ball rests: impacts faster than the restitution threshold (92 and 46 px/s)",
+                      2, bounces);
     CHECK_THAT(ball.center().y, test::near(410, 0.2));
     CHECK_THAT(ball.velocity().y, test::near(0.0, 1e-9));
 }
@@ -346,9 +350,10 @@ TEST_CASE("s5_4: a pyramid of 20 rows stands for 60 s") {
         drift = std::max(drift, run.page.core.object(top).center().distance(start));
         if (second == 10) after_ten_seconds = run.page.core.object(top).center();
     }
-    CHECK(drift < 0.15);
-    CHECK(run.page.core.object(top).center().distance(after_ten_seconds) < 1e-3);
-    CHECK(fastest(run.page.core) < 0.01);
+    test::expectBelow("how far the pyramid's top box moved over 60 s after the first second, px", 0.15, drift);
+    test::expectBelow("how far the top box moved over the last 50 s, px: at rest", 1e-3,
+                      run.page.core.object(top).center().distance(after_ten_seconds));
+    test::expectBelow("the fastest box's speed at the end, px/s", 0.01, fastest(run.page.core));
     CHECK_FALSE(test::firstNotFinite(run.page.core));
 }
 
@@ -379,10 +384,12 @@ TEST_CASE("s5_4: a box 100 times heavier than the slab under it sinks it less th
         scene.run->page.steps(1);
         deepest = std::max(deepest, scene.sunk());
     }
-    CHECK(deepest < 0.5);
+    test::expectBelow("how deep the slab under a box 100 times heavier sank into the floor over 60 s, px", 0.5,
+                      deepest);
     CHECK_THAT(scene.slab().center().x, test::near(400, 0.5));
     CHECK_THAT(scene.heavy().center().x, test::near(400, 0.5));
-    CHECK(scene.heavy().center().y < scene.slab().center().y);
+    test::expectBelow("the heavy box's y below the slab's (y down): still on top", scene.slab().center().y,
+                      scene.heavy().center().y);
 }
 
 TEST_CASE("s5_4: a stack with a 1000 : 1 mass ratio stands for 60 s") {
@@ -401,8 +408,8 @@ TEST_CASE("s5_4: a stack with a 1000 : 1 mass ratio stands for 60 s") {
     }
     // Standing: from then on the slab never sinks a whole pixel (0.73 px at the worst,
     // where 100 : 1 stays under 0.1 px), and both stay where they were put.
-    CHECK(landing < 2.0);
-    CHECK(deepest < 1.0);
+    test::expectBelow("how deep the slab sank as the 1000 : 1 box landed, first 10 s, px", 2.0, landing);
+    test::expectBelow("how deep the slab sank over the next 50 s, px", 1.0, deepest);
     CHECK_THAT(scene.slab().center().x, test::near(400, 1.0));
     CHECK_THAT(scene.heavy().center().x, test::near(400, 1.0));
     // The box still rests on the slab: its bottom (30 below its centre) at the slab's
@@ -471,9 +478,11 @@ TEST_CASE("s5_4: a resting column's contact points are found again, by their key
     }
     page.steps(2 * kStepsPerSecond);
     const engine::ContactSolver& solver = page.core.physics().contactSolver();
-    CHECK(page.core.physics().collisions().size() == 8);
-    CHECK(solver.pointCount() == 16);
-    CHECK(solver.persistedPointCount() == 16);
+    test::expectEqual("colliding pairs of the column of 8 boxes on the floor", 8,
+                      page.core.physics().collisions().size());
+    test::expectEqual("contact points: two a pair", 16, solver.pointCount());
+    test::expectEqual("contact points found again from the step before (warm starting)", 16,
+                      solver.persistedPointCount());
 }
 
 // =================================================================================
@@ -493,9 +502,9 @@ TEST_CASE(
     page.core.add(engine::Rectangle({250, 120.5}, 80, 40, {.mass = 1, .friction = 0.6, .restitution = 0}));
     page.steps(kStepsPerSecond);
     const auto& contacts = page.core.physics().contactSolver().contacts();
-    REQUIRE(contacts.size() == 1);
+    test::requireEqual("contacts of the box hanging over the platform's end: one", 1, contacts.size());
     const engine::ContactSolver::Contact& contact = contacts[0];
-    REQUIRE(contact.points.size() == 2);
+    test::requireEqual("its points: the box's corner and the cut at the platform's end", 2, contact.points.size());
     const engine::ContactFeatures features = engine::featuresOf(contact.points[0].contact.key);
     REQUIRE_FALSE(features.single_point);
     CHECK(engine::featuresOf(contact.points[1].contact.key).reference_face == features.reference_face);
@@ -503,7 +512,7 @@ TEST_CASE(
     const auto& box = static_cast<const engine::Rectangle&>(page.core.object(1));
     const engine::Rectangle& reference = features.reference_is_b ? box : platform;
     const engine::Rectangle& incident = features.reference_is_b ? platform : box;
-    CHECK(&reference == &platform);
+    test::expectEqual("the reference face's shape is the platform (its top face)", &platform, &reference);
     CHECK_THAT(reference.faceNormals()[features.reference_face], test::near(Vec2{0, -1}, 1e-9));
     CHECK_THAT(incident.faceNormals()[features.incident_face], test::near(Vec2{0, 1}, 1e-6));
     const double left = std::min(contact.points[0].contact.position.x, contact.points[1].contact.position.x);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "circle.h"
+#include "expect.h"
 #include "near.h"
 #include "rectangle.h"
 #include "same_state.h"
@@ -163,10 +164,12 @@ TEST_CASE("s5_5: the rest timer starts again from 0 when a shape moves") {
     world.floor();
     world.box(400);
     world.page.steps(20);
-    CHECK(world.page.core.object(1).sleep().rested_s > 0.25);
+    test::expectAbove("the resting box's rest timer after 20 steps, s", 0.25,
+                      world.page.core.object(1).sleep().rested_s);
     world.page.core.object(1).setVelocity({0, -50});  // thrown up, by no key
     world.page.steps(1);
-    CHECK(world.page.core.object(1).sleep().rested_s == 0.0);
+    test::expectEqual("the box's rest timer the step after it was thrown up, s: started again from 0", 0.0,
+                      world.page.core.object(1).sleep().rested_s);
 }
 
 TEST_CASE("s5_5: an island sleeps only when every shape in it has rested for time_to_sleep") {
@@ -187,8 +190,10 @@ TEST_CASE("s5_5: an island sleeps only when every shape in it has rested for tim
         }
         REQUIRE(landed > 0);
         REQUIRE(asleep > 0);
-        CHECK(world.asleep(2));  // the two fall asleep together
-        CHECK(asleep - landed >= 29);
+        // the two fall asleep together
+        test::expectEqual("the second box asleep, with the first: they fall asleep together", true, world.asleep(2));
+        test::expectAtLeast("steps from landing to sleep: at least time_to_sleep's 30 steps, less one", 29,
+                            asleep - landed);
     }
 }
 
@@ -197,10 +202,14 @@ TEST_CASE("s5_5: islands join shapes through touching contacts, never through a 
         INFO("solver " << static_cast<int>(solver));
         TwoIslands world(solver);
         REQUIRE(world.stepUntilAllAsleep());
-        CHECK(world.island(3) == world.island(4));  // the stack: one island
-        CHECK(world.island(1) != world.island(2));  // the lone boxes share the floor only
-        CHECK(world.island(1) != world.island(3));
-        CHECK(world.island(2) != world.island(3));
+        // the stack: one island
+        test::expectEqual("the stack's two boxes (3 under 4) in one island", world.island(4), world.island(3));
+        // the lone boxes share the floor only
+        test::expectEqual("the two lone boxes in islands of their own: they share the static floor only", true,
+                          world.island(1) != world.island(2));
+        test::expectEqual("a lone box and the stack in different islands", true, world.island(1) != world.island(3));
+        test::expectEqual("the other lone box and the stack in different islands", true,
+                          world.island(2) != world.island(3));
     }
 }
 
@@ -221,10 +230,10 @@ TEST_CASE("s5_5: wake rule: an awake shape that starts touching a sleeping one w
                       world.page.core.physics().contactSolver().pointCount() > 0;
         }
         REQUIRE(touched);
-        CHECK_FALSE(world.asleep(3));
-        CHECK_FALSE(world.asleep(4));
-        CHECK(world.asleep(1));
-        CHECK(world.asleep(2));
+        test::expectEqual("the stack's bottom box (3) asleep, after the touch", false, world.asleep(3));
+        test::expectEqual("the stack's top box (4) asleep, after the touch", false, world.asleep(4));
+        test::expectEqual("the lone box 1 asleep: another island", true, world.asleep(1));
+        test::expectEqual("the lone box 2 asleep: another island", true, world.asleep(2));
     }
 }
 
@@ -233,10 +242,12 @@ TEST_CASE("s5_5: wake rule: a shape removed out of the canvas wakes its island")
     REQUIRE(world.stepUntilAllAsleep());
     world.page.core.object(3).move({0, 1000});  // the bottom of the stack, out of the canvas
     world.page.steps(1);
-    REQUIRE(world.page.core.objectCount() == 4);  // the top box is object 3 now
-    CHECK_FALSE(world.asleep(3));
-    CHECK(world.asleep(1));
-    CHECK(world.asleep(2));
+    // the top box is object 3 now
+    test::requireEqual("objects after the stack's bottom box left the canvas: the top box is object 3 now", 4,
+                       world.page.core.objectCount());
+    test::expectEqual("the stack's top box asleep, after the box under it was removed", false, world.asleep(3));
+    test::expectEqual("the lone box 1 asleep: another island", true, world.asleep(1));
+    test::expectEqual("the lone box 2 asleep: another island", true, world.asleep(2));
 }
 
 TEST_CASE("s5_5: wake rule: R removes shapes and wakes the islands they touched") {
@@ -248,9 +259,12 @@ TEST_CASE("s5_5: wake rule: R removes shapes and wakes the islands they touched"
     world.box(60 + 130 * 5, kFloorTop - 40);
     REQUIRE(world.stepUntilAllAsleep());
     world.page.press(browser::Key::R);
-    REQUIRE(world.page.core.objectCount() == 7);
-    CHECK_FALSE(world.asleep(6));
-    for (std::size_t i = 1; i <= 5; ++i) CHECK(world.asleep(i));
+    test::requireEqual("objects after R: the floor and the six boxes it keeps", 7, world.page.core.objectCount());
+    test::expectEqual("the sixth box asleep, after R removed the box on it", false, world.asleep(6));
+    for (std::size_t i = 1; i <= 5; ++i) {
+        INFO("box " << i << ", its own island: R removed nothing that touched it");
+        test::expectEqual("asleep after R", true, world.asleep(i));
+    }
 }
 
 TEST_CASE(
@@ -266,8 +280,8 @@ TEST_CASE(
     REQUIRE(on.stepUntilAllAsleep());
     on.page.core.object(0).move({0, 1000});  // the floor, out of the canvas
     on.page.steps(1);
-    REQUIRE(on.page.core.objectCount() == 4);
-    CHECK(on.page.core.awakeCount() == 4);
+    test::requireEqual("objects after the floor left the canvas: the pile of four", 4, on.page.core.objectCount());
+    test::expectEqual("awake shapes one step after the floor went: the whole pile", 4, on.page.core.awakeCount());
     // From here the pile must fall exactly as the same pile does with sleep off.
     WorldSettings off_world = on.page.core.settings();
     off_world.sleep = false;
@@ -278,7 +292,9 @@ TEST_CASE(
         off.page.steps(1);
         test::requireSameState(off.page.core, on.page.core, "the pile without its floor", step);
     }
-    CHECK(on.page.core.objectCount() < 4);  // it has fallen off the canvas, as it should
+    // it has fallen off the canvas, as it should
+    test::expectBelow("objects after 3 s without a floor: the pile has fallen off the canvas", 4,
+                      on.page.core.objectCount());
 }
 
 TEST_CASE("s5_5: wake rule: every key that moves, turns, pushes or changes a shape wakes it and its island") {
@@ -290,10 +306,10 @@ TEST_CASE("s5_5: wake rule: every key that moves, turns, pushes or changes a sha
         REQUIRE(world.stepUntilAllAsleep());
         world.page.core.select(4);  // the top of the stack
         world.page.press(key);
-        CHECK_FALSE(world.asleep(3));
-        CHECK_FALSE(world.asleep(4));
-        CHECK(world.asleep(1));
-        CHECK(world.asleep(2));
+        test::expectEqual("the stack's bottom box asleep, after the key on the top box", false, world.asleep(3));
+        test::expectEqual("the stack's top box asleep, after the key on it", false, world.asleep(4));
+        test::expectEqual("the lone box 1 asleep: another island", true, world.asleep(1));
+        test::expectEqual("the lone box 2 asleep: another island", true, world.asleep(2));
     }
 }
 
@@ -302,17 +318,17 @@ TEST_CASE("s5_5: wake rule: a key on a static shape wakes everything; selecting 
     REQUIRE(world.stepUntilAllAsleep());
     world.page.press(browser::Key::Down);
     world.page.press(browser::Key::Digit2);
-    CHECK(world.allAsleep());
+    test::expectEqual("every shape asleep after Down and 2: selecting wakes nothing", true, world.allAsleep());
     world.page.core.select(0);  // the floor
     world.page.press(browser::Key::S);
-    CHECK(world.page.core.awakeCount() == 4);
+    test::expectEqual("awake shapes after S on the static floor: all four", 4, world.page.core.awakeCount());
 }
 
 TEST_CASE("s5_5: wake rule: H wakes everything") {
     TwoIslands world;
     REQUIRE(world.stepUntilAllAsleep());
     world.page.press(browser::Key::H);
-    CHECK(world.page.core.awakeCount() == 4);
+    test::expectEqual("awake shapes after H: all four", 4, world.page.core.awakeCount());
 }
 
 TEST_CASE("s5_5: wake rule: a change of gravity or of any world setting wakes everything") {
@@ -322,20 +338,20 @@ TEST_CASE("s5_5: wake rule: a change of gravity or of any world setting wakes ev
         WorldSettings changed = world.page.core.settings();
         changed.gravity = {5, 20};
         world.page.core.changeSettings(changed);
-        CHECK(world.page.core.awakeCount() == 4);
+        test::expectEqual("awake shapes after a change of gravity: all four", 4, world.page.core.awakeCount());
     }
     SECTION("the same settings again wake nothing") {
         TwoIslands world;
         REQUIRE(world.stepUntilAllAsleep());
         world.page.core.changeSettings(world.page.core.settings());
-        CHECK(world.allAsleep());
+        test::expectEqual("every shape asleep after the same settings again", true, world.allAsleep());
     }
     for (browser::Key key : {browser::Key::Comma, browser::Key::M, browser::Key::Y}) {
         INFO("key " << browser::key_name(key));
         TwoIslands world;
         REQUIRE(world.stepUntilAllAsleep());
         world.page.press(key);
-        CHECK(world.page.core.awakeCount() == 4);
+        test::expectEqual("awake shapes after a change of a world setting: all four", 4, world.page.core.awakeCount());
     }
 }
 
@@ -450,9 +466,10 @@ TEST_CASE("s5_5: a shape's drift counts over the last time_to_sleep of its rest,
         run.page.steps(1);
         if (run.asleep(0)) asleep = step;
     }
-    CHECK(run.island(0) == run.island(1));
-    CHECK(asleep > kick + 29);
-    CHECK(asleep <= kick + 32);
+    test::expectEqual("the two touching circles in one island", run.island(1), run.island(0));
+    test::expectAbove("the step the island fell asleep: more than time_to_sleep (30 steps) after the kick at step 24",
+                      kick + 29, asleep);
+    test::expectAtMost("the step the island fell asleep: within 32 steps of the kick", kick + 32, asleep);
 }
 
 TEST_CASE("s5_5: a pile asleep costs no pair work: its pairs are passed over before their bound tests") {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "expect.h"
 #include "my_game.h"
 #include "near.h"
 #include "random.h"
@@ -29,10 +30,10 @@ void buildBookScene(Core& core, browser::Random& random) {
 // One of the cool demo's random shapes (5.1 on), as the book's MyGame.js draws it.
 struct DemoShape {
     bool is_box;
-    browser::Vec2 center;
+    lib::Vec2 center;
     double width = 0, height = 0, radius = 0;
     double mass, friction, restitution;
-    browser::Vec2 velocity;
+    lib::Vec2 velocity;
 };
 
 // The demo's ten boxes and ten balls, drawn from `random` as the book's constructor
@@ -71,11 +72,14 @@ inline std::vector<DemoShape> demoShapesAsTheBookDraws(browser::Random& random) 
 // found exactly those four pairs, in the pass's order.
 template <class Collisions>
 void checkBorderCornersFound(const Collisions& found) {
-    REQUIRE(found.size() == 4);
+    test::requireEqual("pairs found among the borders (objects 1 to 4): each corner of the canvas, where two overlap",
+                       std::size_t{4}, found.size());
     const std::pair<std::size_t, std::size_t> corners[] = {{1, 3}, {1, 4}, {2, 3}, {2, 4}};
     for (std::size_t k = 0; k < 4; ++k) {
-        CHECK(found[k].first == corners[k].first);
-        CHECK(found[k].second == corners[k].second);
+        INFO("corner " << k << ": borders " << corners[k].first << " and " << corners[k].second
+                       << " (1 top, 2 bottom, 3 left, 4 right), in the pass's order");
+        test::expectEqual("the pair's first object", corners[k].first, found[k].first);
+        test::expectEqual("the pair's second object", corners[k].second, found[k].second);
         CHECK_THAT(found[k].info.depth(), test::near(1.5, 1e-12));  // rounding of coordinates up to 800 px
     }
 }

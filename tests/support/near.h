@@ -28,8 +28,8 @@
 
 namespace Catch {
 template <>
-struct StringMaker<browser::Vec2> {
-    static std::string convert(const browser::Vec2& v) {
+struct StringMaker<lib::Vec2> {
+    static std::string convert(const lib::Vec2& v) {
         // Appended piece by piece: g++ 12 warns wrongly about "(" + a temporary string.
         std::string text = "(";
         text += browser::to_js_string(v.x);
@@ -71,11 +71,11 @@ private:
     mutable double missed_by_ = 0.0;  // of the value last matched, for the message
 };
 
-class NearVecMatcher final : public Catch::MatcherBase<browser::Vec2> {
+class NearVecMatcher final : public Catch::MatcherBase<lib::Vec2> {
 public:
-    NearVecMatcher(browser::Vec2 expected, double tolerance) : expected_(expected), tolerance_(tolerance) {}
+    NearVecMatcher(lib::Vec2 expected, double tolerance) : expected_(expected), tolerance_(tolerance) {}
 
-    bool match(const browser::Vec2& actual) const override {
+    bool match(const lib::Vec2& actual) const override {
         return std::abs(actual.x - expected_.x) <= tolerance_ && std::abs(actual.y - expected_.y) <= tolerance_;
     }
     std::string describe() const override {
@@ -84,13 +84,13 @@ public:
     }
 
 private:
-    browser::Vec2 expected_;
+    lib::Vec2 expected_;
     double tolerance_;
 };
 
 // |actual - expected| <= tolerance.
 inline NearMatcher near(double expected, double tolerance) { return {expected, tolerance}; }
 // Each coordinate within `tolerance` of the expected one.
-inline NearVecMatcher near(browser::Vec2 expected, double tolerance) { return {expected, tolerance}; }
+inline NearVecMatcher near(lib::Vec2 expected, double tolerance) { return {expected, tolerance}; }
 
 }  // namespace test

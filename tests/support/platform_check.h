@@ -12,7 +12,7 @@
 namespace test {
 
 struct Platform {
-    browser::Vec2 center;
+    lib::Vec2 center;
     double width = 400;
     double height = 20;
     double angle = 0;
@@ -36,7 +36,7 @@ inline void checkPlatform(const engine::RigidShape& shape, const Platform& expec
 // book's order (top, bottom, left, right), static, from object `first` on.
 inline void checkBorders(const engine::Core& core, std::size_t first) {
     const struct {
-        browser::Vec2 center;
+        lib::Vec2 center;
         double width, height;
     } borders[] = {{{400, 0}, 800, 3}, {{400, 450}, 800, 3}, {{0, 225}, 3, 450}, {{800, 225}, 3, 450}};
     for (std::size_t k = 0; k < 4; ++k) {

@@ -16,7 +16,7 @@
 
 namespace test {
 
-using browser::Vec2;
+using lib::Vec2;
 
 class RandomShapes {
 public:

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "browser.h"
+#include "color_text.h"
 #include "core.h"
 #include "random.h"
 #include "user_control.h"

@@ -54,6 +54,11 @@ inline std::string readText(const std::filesystem::path& file) {
 // "ulimit -v KB; ").
 inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string& arguments,
                                   const std::string& before = "") {
+    // Not "127 == 0" when the program is not there: the build that makes it.
+    if (!std::filesystem::exists(STAGE_PROGRAM)) {
+        FAIL("the stage's program " << STAGE_PROGRAM << " is not built: cmake --build <build folder> --target "
+                                    << std::filesystem::path(STAGE_PROGRAM).filename().string());
+    }
     const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
     std::string command = before + quoted(STAGE_PROGRAM);
     command.append(" ").append(arguments).append(" >").append(quoted(out)).append(" 2>").append(quoted(err));

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "expect.h"
 #include "keys.h"
 #include "scratch_folder.h"
 #include "stage_program.h"
@@ -21,7 +22,9 @@ inline std::vector<DumpRow> runWalkthrough(const ScratchFolder& folder, const st
     const ProgramRun run =
         runStageProgram(folder, "--keys \"" + script + "\" --frames " + std::to_string(frames) + " --out " +
                                     quoted(folder.path / "out") + " --dump " + quoted(folder.path / "dump.csv"));
-    REQUIRE(run.status == 0);
+    INFO("the stage's program with the walkthrough's keys \"" << script << "\" for " << frames
+                                                              << " frames; it said: " << run.error_text);
+    test::requireEqual("the program's exit status (0: the run succeeded)", 0, run.status);
     return readDump(folder.path / "dump.csv");
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "browser.h"
+#include "color_text.h"
 #include "circle.h"
 #include "core.h"
 #include "random.h"
@@ -17,7 +18,7 @@
 
 namespace test {
 
-using browser::Vec2;
+using lib::Vec2;
 
 // The book's chapter 4 world with its flags and gravity set as a test needs them.
 inline engine::WorldSettings world(bool movement, Vec2 gravity = engine::kGravity) {

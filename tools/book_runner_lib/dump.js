@@ -47,36 +47,70 @@ function shapeName(shape) {
     return type;
 }
 
-// Rows go to "<path>.partial-<pid>"; finish() renames it to <path>, so a run that
-// fails never leaves a file that looks like a whole dump.
+// Rows go to "<path>.partial-<pid>" as the run goes (a buffer of about a megabyte at a
+// time, so a long run needs no more memory than a short one); finish() renames it to
+// <path>, so a run that fails never leaves a file that looks like a whole dump. The
+// partial file is made new: one already there under that name is never written over.
+const kFlushBytes = 1 << 20;
+
 class StateDump {
     constructor(file) {
         this.file = file;
         this.partial = `${file}.partial-${process.pid}`;
+        this.fd = fs.openSync(this.partial, 'wx');
         this.lines = [kHeader];
+        this.bytes = kHeader.length;
     }
 
     rows(step, shapes) {
         shapes.forEach((shape, index) => {
             const numbers = [shape.mCenter.x, shape.mCenter.y, shape.mAngle, shape.mVelocity.x, shape.mVelocity.y,
                 shape.mAngularVelocity];
-            this.lines.push([step, index, shapeName(shape), ...numbers.map(formatNumber)].join(','));
+            const line = [step, index, shapeName(shape), ...numbers.map(formatNumber)].join(',');
+            this.lines.push(line);
+            this.bytes += line.length + 1;
         });
+        if (this.bytes >= kFlushBytes) this.flush();
+    }
+
+    flush() {
+        if (this.lines.length === 0) return;
+        fs.writeSync(this.fd, `${this.lines.join('\n')}\n`);
+        this.lines = [];
+        this.bytes = 0;
     }
 
     finish() {
         try {
-            fs.writeFileSync(this.partial, `${this.lines.join('\n')}\n`, { flag: 'wx' });
+            this.flush();
+            fs.closeSync(this.fd);
+            this.fd = undefined;
             fs.renameSync(this.partial, this.file);
         } catch (error) {
-            try {
-                fs.unlinkSync(this.partial);
-            } catch (ignored) {
-                // nothing was written
-            }
+            this.abort();
             throw error;
         }
     }
+
+    // The partial file removed: the run failed or was stopped.
+    abort() {
+        try {
+            if (this.fd !== undefined) fs.closeSync(this.fd);
+        } catch (ignored) {
+            // already closed
+        }
+        this.fd = undefined;
+        removePartial(this.file);
+    }
 }
 
-module.exports = { StateDump, DumpShapeError, formatNumber };
+// The partial file of this process's dump to `file`, removed if it is there.
+function removePartial(file) {
+    try {
+        fs.unlinkSync(`${file}.partial-${process.pid}`);
+    } catch (ignored) {
+        // nothing was written
+    }
+}
+
+module.exports = { StateDump, DumpShapeError, formatNumber, removePartial };

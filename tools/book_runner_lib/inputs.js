@@ -9,6 +9,44 @@ const fs = require('fs');
 
 class InputError extends Error {}
 
+// The whole of a file the runner reads (a scene, index.html, a script), when it is a
+// regular file of at most `mostBytes`: opened without blocking and checked once open, so
+// that a FIFO is refused rather than waited on for ever, and a device such as /dev/zero
+// rather than read without end. Throws `ErrorKind` with "<file>: <reason>".
+function readRegularFile(file, mostBytes, ErrorKind) {
+    let fd;
+    try {
+        fd = fs.openSync(file, fs.constants.O_RDONLY | fs.constants.O_NONBLOCK);
+    } catch (error) {
+        throw new ErrorKind(`${file}: cannot read it (${error.code || error.message})`);
+    }
+    try {
+        const stat = fs.fstatSync(fd);
+        if (stat.isDirectory()) throw new ErrorKind(`${file}: it is a folder, not a file`);
+        if (stat.isFIFO()) throw new ErrorKind(`${file}: it is a FIFO, not a regular file`);
+        if (stat.isCharacterDevice() || stat.isBlockDevice()) {
+            throw new ErrorKind(`${file}: it is a device, not a regular file`);
+        }
+        if (!stat.isFile()) throw new ErrorKind(`${file}: it is not a regular file`);
+        if (stat.size > mostBytes) throw new ErrorKind(`${file}: larger than ${mostBytes} bytes, the most it may be`);
+        // One byte past the limit tells a file that grew while it was read.
+        const buffer = Buffer.alloc(mostBytes + 1);
+        let length = 0;
+        for (;;) {
+            const got = fs.readSync(fd, buffer, length, buffer.length - length, null);
+            if (got === 0) break;
+            length += got;
+            if (length > mostBytes) throw new ErrorKind(`${file}: larger than ${mostBytes} bytes, the most it may be`);
+        }
+        return buffer.toString('utf8', 0, length);
+    } catch (error) {
+        if (error instanceof ErrorKind) throw error;
+        throw new ErrorKind(`${file}: cannot read it (${error.code || error.message})`);
+    } finally {
+        fs.closeSync(fd);
+    }
+}
+
 // The keys the book's UserControl.js listens for, by our script's names, with the key
 // codes a browser's keydown event carries for them.
 function keyCode(name) {
@@ -19,6 +57,10 @@ function keyCode(name) {
     if (name === 'down') return 40;
     return undefined;
 }
+
+// What a scene may hold (docs/scene_format.md, common/scene_file.h): our programs' limits.
+const kMostSceneBytes = 2 * 1024 * 1024;
+const kMostNesting = 4;
 
 const kMaxCount = 2000;
 const kMaxFrame = 10000000;
@@ -76,6 +118,9 @@ const kBodyKeys = ['shape', 'center', 'width', 'height', 'radius', 'mass', 'fric
     'velocity', 'angular_velocity'];
 
 function describe(value) {
+    // JSON.parse reads a number beyond a double's range (1e400) as an infinity, which
+    // JSON.stringify would show as null.
+    if (typeof value === 'number' && !Number.isFinite(value)) return 'a number beyond the range of a double';
     const text = JSON.stringify(value);
     return text.length > 40 ? `${text.slice(0, 37)}...` : text;
 }
@@ -83,15 +128,23 @@ function describe(value) {
 // A scene: {world: {gravity?, movement?, positional_correction?}, bodies: [...]}, each
 // body with every key filled in with its documented default.
 function parseScene(file) {
-    let text;
-    try {
-        const stat = fs.statSync(file);
-        if (!stat.isFile()) throw new InputError(`${file}: a scene file must be a regular file`);
-        if (stat.size > 2 * 1024 * 1024) throw new InputError(`${file}: a scene file holds at most 2 MiB`);
-        text = fs.readFileSync(file, 'utf8');
-    } catch (error) {
-        if (error instanceof InputError) throw error;
-        throw new InputError(`${file}: cannot read it (${error.code || error.message})`);
+    const text = readRegularFile(file, kMostSceneBytes, InputError);
+    // {"bodies": [{"center": [x, y]}]} is as deep as a scene goes: deeper nesting is
+    // refused before JSON.parse, whose recursion it would otherwise reach.
+    let depth = 0;
+    let inString = false;
+    for (let i = 0; i < text.length; i++) {
+        const c = text[i];
+        if (inString) {
+            if (c === '\\') i++;
+            else if (c === '"') inString = false;
+        } else if (c === '"') inString = true;
+        else if (c === '{' || c === '[') {
+            if (++depth > kMostNesting) {
+                throw new InputError(`${file}: nested deeper than a scene can use (${kMostNesting} levels: ` +
+                    '{"bodies": [{"center": [x, y]}]})');
+            }
+        } else if (c === '}' || c === ']') depth--;
     }
     let scene;
     try {
@@ -184,4 +237,4 @@ function parseScene(file) {
     return { world, bodies };
 }
 
-module.exports = { InputError, parseKeyScript, parseScene };
+module.exports = { InputError, parseKeyScript, parseScene, readRegularFile };

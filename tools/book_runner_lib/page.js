@@ -13,6 +13,7 @@
 const fs = require('fs');
 const path = require('path');
 const vm = require('vm');
+const { readRegularFile } = require('./inputs.js');
 
 class PageError extends Error {}
 // The folder given is no book project the runner can load: a refused argument.
@@ -40,16 +41,33 @@ function element(id) {
     return { id, innerHTML: '', width: 300, height: 150, style: {}, getContext: () => context };
 }
 
+// The most the runner reads of a project: the book's index.html files are a few
+// hundred bytes, its scripts a few kilobytes each.
+const kMostIndexBytes = 1024 * 1024;
+const kMostScriptBytes = 8 * 1024 * 1024;
+
+// Whether `file`, its links resolved, lies inside the folder `root`.
+function isInside(file, root) {
+    const real = (name) => {
+        try {
+            return fs.realpathSync(name);
+        } catch (error) {
+            return path.resolve(name);
+        }
+    };
+    const top = real(root);
+    const found = real(file);
+    return found === top || found.startsWith(top + path.sep);
+}
+
 // What index.html asks for: the scripts in order, and the body's two handlers.
 function readIndex(folder) {
     const index = path.join(folder, 'index.html');
-    let html;
-    try {
-        html = fs.readFileSync(index, 'utf8');
-    } catch (error) {
-        throw new ProjectError(`${folder}: no index.html to load (${error.code || error.message}); ` +
+    if (!fs.existsSync(index)) {
+        throw new ProjectError(`${folder}: no index.html to load (ENOENT); ` +
             'give the folder of one book project, the one that holds its index.html');
     }
+    const html = readRegularFile(index, kMostIndexBytes, ProjectError);
     const scripts = [...html.matchAll(/<script\b[^>]*\bsrc\s*=\s*"([^"]+)"/gi)].map((m) => m[1]);
     const body = /<body\b([^>]*)>/i.exec(html);
     const handler = (name) => {
@@ -61,16 +79,18 @@ function readIndex(folder) {
 }
 
 class Page {
-    // `folder` holds the project's index.html; `frameMs` is the length of one frame;
+    // `folder` holds the project's index.html, inside `root`, the folder the reader gave,
+    // out of which no script is read; `frameMs` is the length of one frame;
     // `random` stands in for Math.random(). A browser would hang on a script that never
     // returns; the page stops the run when one call of its code runs longer than
     // `longestCallMs` (a frame of 2,500 shapes takes a few seconds).
-    constructor(folder, frameMs, random, longestCallMs) {
+    constructor(folder, root, frameMs, random, longestCallMs) {
         this.frameMs = frameMs;
         this.longestCallMs = longestCallMs;
         this.frames = 0;
         this.callbacks = [];
-        this.errors = [];
+        this.errors = [];  // the first few messages of throws in frames and key handlers
+        this.errorCount = 0;
         const page = readIndex(folder);
         this.indexFile = page.index;
 
@@ -94,11 +114,15 @@ class Page {
 
         for (const src of page.scripts) {
             const file = path.join(folder, src);
+            if (!isInside(file, root)) {
+                throw new ProjectError(`${page.index}: its script ${src} lies outside the project folder ${root}, ` +
+                    'which is all the runner reads');
+            }
             let code;
             try {
-                code = fs.readFileSync(file, 'utf8');
+                code = readRegularFile(file, kMostScriptBytes, ProjectError);
             } catch (error) {
-                throw new ProjectError(`${page.index}: cannot read its script ${src} (${error.code || error.message})`);
+                throw new ProjectError(`${page.index}: cannot read its script ${src}: ${error.message}`);
             }
             this.run(() => vm.runInContext(code, this.global, { filename: file, timeout: this.longestCallMs }),
                 `loading ${src}`);
@@ -160,7 +184,8 @@ class Page {
                 throw new PageError(`the book's code ran for over ${this.longestCallMs / 1000} s in ${when} ` +
                     'without returning (a loop that never ends?)');
             }
-            this.errors.push(`${when}: ${firstLine(error)}`);
+            this.errorCount += 1;
+            if (this.errors.length < 10) this.errors.push(`${when}: ${firstLine(error)}`);
         }
     }
 

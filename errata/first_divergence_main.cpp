@@ -8,12 +8,19 @@
 // state dump.
 
 #include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "dump_divergence.h"
+#include "known_differences.h"
+#include "message_text.h"
 
 namespace {
 constexpr int kAgree = 0, kDiffer = 1, kTrouble = 2;
@@ -33,28 +40,45 @@ int main(int argc, char** argv) {
                        ? std::string()
                        : std::string("a book project is X.Y, such as 4.4");
         });
-    app.add_option("--absolute", tolerance.absolute, "absolute tolerance (default 1e-9)")
-        ->check(CLI::NonNegativeNumber);
-    app.add_option("--relative", tolerance.relative, "tolerance relative to the larger number (default 1e-9)")
-        ->check(CLI::NonNegativeNumber);
+    // A tolerance is a plain number: NaN would make every comparison fail, and one that
+    // is refused is named in a few characters, not in the 300 digits of a huge double.
+    const auto tolerance_check = [](double most) {
+        return [most](const std::string& text) {
+            double value = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            const bool number = !text.empty() && error == std::errc{} && end == text.data() + text.size();
+            if (number && std::isfinite(value) && value >= 0 && value <= most) return std::string();
+            std::ostringstream range;
+            range << "must be a number from 0 to " << most << " (got " << browser::in_quotes(text) << ")";
+            return range.str();
+        };
+    };
+    app.add_option("--absolute", tolerance.absolute, "absolute tolerance (default 1e-9), 0 to 1e6")
+        ->check(tolerance_check(1e6));
+    app.add_option("--relative", tolerance.relative, "tolerance relative to the larger number (default 1e-9), 0 to 1")
+        ->check(tolerance_check(1));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) return app.exit(error);
-        std::cerr << "first_divergence: " << error.what() << " (--help lists the options)\n";
+        std::cerr << "first_divergence: " << browser::printable(error.what()) << " (--help lists the options)\n";
         return kTrouble;
     }
     try {
-        const auto divergence =
-            browser::first_divergence(browser::read_dump(file_a), browser::read_dump(file_b), tolerance);
+        const auto divergence = browser::first_divergence(std::filesystem::path(file_a), file_b, tolerance);
+        const std::string name_a = browser::printable(file_a), name_b = browser::printable(file_b);
         if (!divergence) {
-            std::cout << "no divergence: " << file_a << " and " << file_b << " agree at every step\n";
+            std::cout << "no divergence: " << name_a << " and " << name_b << " agree at every step\n";
             return kAgree;
         }
-        std::cout << browser::describe(*divergence, file_a, file_b, tolerance, stage);
+        std::cout << browser::describe(*divergence, name_a, name_b, tolerance);
+        if (divergence->step > 0) std::cout << errata::explanation(*divergence, stage);
         return kDiffer;
     } catch (const browser::DumpError& error) {
         std::cerr << "first_divergence: " << error.what() << '\n';
+        return kTrouble;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "first_divergence: out of memory\n";
         return kTrouble;
     }
 }
