@@ -98,7 +98,7 @@ TEST_CASE("correction overlay: the book's scene run with the overlay off keeps n
     }
     const auto bits = [](double value) { return std::bit_cast<std::uint64_t>(value); };
     std::size_t frames_recorded = 0, differing = 0;
-    constexpr int kFrames = 240;  // 4 s at the page's 60 frames a second
+    constexpr int kFrames = 120;  // 2 s at the page's 60 frames a second
     for (int frame = 0; frame < kFrames; ++frame) {
         plain.frame();
         shown.frame();
