@@ -15,8 +15,6 @@ namespace browser {
 
 namespace {
 
-constexpr std::string_view kHeader = "step,index,shape,cx,cy,angle,vx,vy,angular_velocity";
-
 std::vector<std::string_view> split_commas(std::string_view line) {
     std::vector<std::string_view> parts;
     std::size_t start = 0;
@@ -112,8 +110,8 @@ DumpReader::DumpReader(std::function<bool(std::string&)> next_line, std::string_
     : next_line_(std::move(next_line)), name_(name) {
     std::string header;
     if (!next_line_(header)) throw refuse("not a state dump: it is empty");
-    // The columns by name: the ones compared must be there; others (a body's id, say)
-    // may come anywhere, and are read past.
+    // The columns by name: the ones compared must be there, and a body's id may be
+    // (state_dump.h); others may come anywhere, and are read past.
     const std::vector<std::string_view> names = split_commas(header);
     columns_ = names.size();
     const auto find = [&](std::string_view wanted) -> std::optional<std::size_t> {
@@ -129,10 +127,13 @@ DumpReader::DumpReader(std::function<bool(std::string&)> next_line, std::string_
         whole = at.has_value();
         if (at) field_at_[f] = *at;
     }
-    if (!whole) throw refuse("not a state dump: the first line must name the columns \"" + std::string(kHeader) + "\"");
+    if (!whole) {
+        throw refuse("not a state dump: the first line must name the columns \"" + std::string(kDumpHeader) + "\"");
+    }
     step_at_ = *step;
     index_at_ = *index;
     shape_at_ = *shape;
+    id_at_ = find("id");
 }
 
 DumpError DumpReader::refuse(const std::string& problem) const {
@@ -153,6 +154,10 @@ std::optional<DumpRow> DumpReader::read_row() {
     if (!step || !index) throw refuse("step and index must be whole numbers");
     row.step = *step;
     row.index = *index;
+    if (id_at_) {
+        row.id = read_number<std::uint64_t>(parts[*id_at_]);
+        if (!row.id) throw refuse("the id must be a whole number");
+    }
     row.shape = parts[shape_at_];
     if (!is_plain_word(row.shape)) throw refuse("the shape must be a plain word (lower-case letters, digits, _)");
     for (std::size_t f = 0; f < kDumpFields.size(); ++f) {

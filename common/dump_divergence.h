@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <istream>
@@ -27,6 +28,7 @@ inline constexpr std::array<std::string_view, 6> kDumpFields{"cx", "cy", "angle"
 struct DumpRow {
     long step = 0;
     std::size_t index = 0;
+    std::optional<std::uint64_t> id;  // in a dump with ids (state_dump.h)
     std::string shape;
     std::array<double, kDumpFields.size()> values{};
 };
@@ -37,10 +39,12 @@ struct DumpError : std::runtime_error {
 };
 
 // A dump read step by step, checking its shape: a header naming the columns (step,
-// index, shape and kDumpFields, in any order; a column it does not know, such as a
-// body's id, is read past), every row with as many fields, steps that never go back,
-// each step's bodies numbered 0, 1, 2... Memory holds one step, and a step at most
-// kMostRowsInStep bodies. `name` is what messages call it.
+// index, shape and kDumpFields, in any order; a body's id, "id", when the dump has ids;
+// a column it does not know is read past), every row with as many fields, steps that
+// never go back, each step's bodies numbered 0, 1, 2... Two dumps are compared body by
+// body in index order, whether they have ids or not (a stage with ids against one
+// without). Memory holds one step, and a step at most kMostRowsInStep bodies. `name`
+// is what messages call it.
 inline constexpr std::size_t kMostRowsInStep = 1'000'000;
 class DumpReader {
 public:
@@ -57,6 +61,7 @@ private:
     std::string name_;
     long line_number_ = 1;
     std::size_t columns_ = 0, step_at_ = 0, index_at_ = 0, shape_at_ = 0;
+    std::optional<std::size_t> id_at_;  // a dump with ids (state_dump.h)
     std::array<std::size_t, kDumpFields.size()> field_at_{};
     struct Last {
         long step;

@@ -63,12 +63,36 @@ int legend_top(const Document& document) {
 
 void draw_legend(Image& page, const Document& document);
 
+// The band under the page (Document::beyond_echo): its first line this far below the
+// canvas, and a half margin under its last.
+constexpr int kBandGap = kPanelMargin / 2;
+
+// The band's lines, one a '\n', each wrapped to the panel's width as the echo's are.
+std::vector<std::string> beyond_lines(const Document& document) {
+    std::vector<std::string> lines;
+    std::string_view text = document.beyond_echo;
+    while (!text.empty()) {
+        const std::size_t end = text.find('\n');
+        for (std::string& piece : wrap(font_text(text.substr(0, end)), kPanelWidth - 2 * kPanelMargin)) {
+            lines.push_back(std::move(piece));
+        }
+        text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    }
+    return lines;
+}
+
+int band_height(const std::vector<std::string>& lines) {
+    if (lines.empty()) return 0;
+    return kBandGap + static_cast<int>(lines.size()) * kLineHeight + kPanelMargin / 2;
+}
+
 }  // namespace
 
 Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
     const int scale = document.canvas.scale();
-    Image page(canvas.width + kPanelWidth * scale, canvas.height, colors::kWhite);
+    const std::vector<std::string> beyond = beyond_lines(document);
+    Image page(canvas.width + kPanelWidth * scale, canvas.height + band_height(beyond) * scale, colors::kWhite);
     page.paste(canvas, 0, 0);
 
     // The frame lies on the canvas's outermost pixels (its outermost `scale` rows and
@@ -105,6 +129,13 @@ Image render_page(const Document& document) {
         }
     }
     draw_legend(page, document);
+    // The stage's own section, on the band: under the panel's lines, where a reader of
+    // the panel goes on reading.
+    y = document.canvas.height() + kBandGap;
+    for (const std::string& line : beyond) {
+        draw_text(page, line, text_left * scale, y * scale, kTextColor, scale);
+        y += kLineHeight;
+    }
     return page;
 }
 

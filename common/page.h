@@ -20,6 +20,11 @@ struct LegendEntry {
 struct Document {
     Canvas canvas;        // <canvas id="canvas">
     std::string ui_echo;  // <div id="uiEchoString">: plain text, '\n' starts a new line
+    // What a stage beyond the book adds to the echo, its own settings and keys: a section
+    // of its own, under the book's lines, on a band the page grows by (render_page), so
+    // that the book's echo keeps every line whole. Empty in the book's projects. A stage
+    // keeps its number of lines the same from frame to frame: the page's height follows it.
+    std::string beyond_echo;
     // What the overlay's colours mean (overlay_draw.h), boxed at the bottom of the echo
     // panel; empty while the overlay is off.
     std::vector<LegendEntry> legend;
@@ -28,10 +33,12 @@ struct Document {
 inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
 
 // Composes the page: canvas with a thin frame, the echo panel beside it, and the
-// legend, when there is one, in a box at the panel's bottom (a swatch and a line each).
-// Size: (canvas width + kPanelWidth) x canvas height, times the canvas's scale: the
-// frame, the panel and its text are drawn that many times larger too, and the text is
-// wrapped where it is wrapped at scale 1.
+// legend, when there is one, in a box at the panel's bottom (a swatch and a line each);
+// then, when the document has a beyond_echo, a white band under them both with its
+// lines, under the panel's.
+// Size: (canvas width + kPanelWidth) x (canvas height + the band, if any), times the
+// canvas's scale: the frame, the panel and its text are drawn that many times larger
+// too, and the text is wrapped where it is wrapped at scale 1.
 Image render_page(const Document& document);
 
 // The page with one line of text under it, on a gray band the page's width: what a

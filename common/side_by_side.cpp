@@ -23,9 +23,14 @@ constexpr int kLabelLeft = 6;
 
 }  // namespace
 
+// The canvas's frame runs down its left edge, row after row; a band under the page (a
+// stage's section beyond the book, page.h) is white paper there. The canvas ends with
+// the frame.
 Image canvas_of(const Image& page, int scale) {
     const int width = std::max(page.width - kPanelWidth * scale, 0);
-    Image canvas(width, page.height);
+    int height = page.height;
+    while (height > 0 && width > 0 && page.at(0, height - 1) == colors::kWhite) --height;
+    Image canvas(width, height);
     canvas.paste(page, 0, 0);
     return canvas;
 }

@@ -9,8 +9,9 @@
 
 namespace browser {
 
-// The left `page.width - kPanelWidth * scale` columns of a page (page.h): its canvas
-// with the frame round it.
+// The left `page.width - kPanelWidth * scale` columns of a page (page.h), down to the
+// bottom of the frame: its canvas with the frame round it, without the band a stage
+// beyond the book adds under the page.
 Image canvas_of(const Image& page, int scale);
 
 // The part of `picture` at (x, y), width x height pixels; what lies outside

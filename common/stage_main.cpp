@@ -36,7 +36,12 @@ void dump_state(StateDump& dump, const PageWorld& world) {
     const std::vector<ObjectState> objects = world.objects();
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const ObjectState& object = objects[i];
-        dump.row(step, i, object.kind, object.center, object.angle, object.velocity, object.angular_velocity);
+        if (object.id) {
+            dump.row(step, i, *object.id, object.kind, object.center, object.angle, object.velocity,
+                     object.angular_velocity);
+        } else {
+            dump.row(step, i, object.kind, object.center, object.angle, object.velocity, object.angular_velocity);
+        }
     }
 }
 

@@ -32,6 +32,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -52,6 +53,9 @@ namespace browser {
 // One object of the world as --dump writes it, and as the finiteness check reads it.
 struct ObjectState {
     std::string_view kind;  // the word the stage's scene files use for its kind, a plain word
+    // Who the object is, in a stage whose objects have an identity that never changes
+    // and is never given twice; the dump writes it beside the index (state_dump.h).
+    std::optional<std::uint64_t> id;
     lib::Vec2 center;
     double angle = 0.0;  // rad
     lib::Vec2 velocity;

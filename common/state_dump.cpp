@@ -98,7 +98,6 @@ StateDump::StateDump(fs::path path, const fs::path& out, std::span<const fs::pat
     errno = 0;
     out_.open(partial_, std::ios::binary | std::ios::trunc);
     if (!out_) fail(failure_reason());
-    out_ << "step,index,shape,cx,cy,angle,vx,vy,angular_velocity\n";
 }
 
 StateDump::~StateDump() {
@@ -110,13 +109,33 @@ StateDump::~StateDump() {
 
 void StateDump::row(long step, std::size_t index, std::string_view kind, lib::Vec2 center, double angle,
                     lib::Vec2 velocity, double angular_velocity) {
+    write_row(step, index, std::nullopt, kind, center, angle, velocity, angular_velocity);
+}
+
+void StateDump::row(long step, std::size_t index, std::uint64_t id, std::string_view kind, lib::Vec2 center,
+                    double angle, lib::Vec2 velocity, double angular_velocity) {
+    write_row(step, index, id, kind, center, angle, velocity, angular_velocity);
+}
+
+void StateDump::write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view kind,
+                          lib::Vec2 center, double angle, lib::Vec2 velocity, double angular_velocity) {
     if (finished_) throw std::logic_error("StateDump::row after finish()");
     if (!is_plain_word(kind)) {
         std::string message = "StateDump::row: a kind must be a plain word, not \"";
         throw std::invalid_argument(message.append(kind).append("\""));
     }
-    std::string line = std::to_string(step);
-    line.append(",").append(std::to_string(index)).append(",").append(kind);
+    if (with_ids_ && *with_ids_ != id.has_value()) {
+        throw std::logic_error(id ? "StateDump::row: an id, where the first row had none"
+                                  : "StateDump::row: no id, where the first row had one");
+    }
+    std::string line;
+    if (!with_ids_) {
+        with_ids_ = id.has_value();
+        line.append(id ? kDumpHeaderWithIds : kDumpHeader).append("\n");
+    }
+    line.append(std::to_string(step)).append(",").append(std::to_string(index));
+    if (id) line.append(",").append(std::to_string(*id));
+    line.append(",").append(kind);
     for (const double value : {center.x, center.y, angle, velocity.x, velocity.y, angular_velocity}) {
         line += ',';
         append_number(line, value);
@@ -130,7 +149,8 @@ void StateDump::row(long step, std::size_t index, std::string_view kind, lib::Ve
 void StateDump::finish() {
     if (finished_) return;
     errno = 0;
-    out_.close();  // flushes: a full disk shows here at the latest
+    if (!with_ids_) out_ << kDumpHeader << '\n';  // no body in the whole run: no id either
+    out_.close();                                 // flushes: a full disk shows here at the latest
     if (!out_) fail(failure_reason());
     stop_if_interrupted();
     std::error_code error;

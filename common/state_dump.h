@@ -6,7 +6,15 @@
 //   0,0,rectangle,500,200,2.7999999999999998,0,0,0
 //
 // Step 0 is the scene as built, before any update; step k is the state after the k-th
-// update. `index` is the body's place in the object list at that step. Numbers carry 17
+// update. `index` is the body's place in the object list at that step. A stage whose
+// bodies have ids that never change gives each row its body's id too, beside the
+// index, and the header says so:
+//
+//   step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity
+//   0,0,1,rectangle,500,200,2.7999999999999998,0,0,0
+//
+// The first row decides which of the two the dump is: the header is written with it
+// (a run with no body at all gets the first one from finish()). Numbers carry 17
 // significant digits, which is what it takes for std::strtod to give back the very same
 // double; a simulation that blew up shows as nan or inf, which strtod reads too.
 //
@@ -26,6 +34,7 @@
 // the folder's manifest (output_folder.h), so the next run may replace it.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -40,9 +49,13 @@
 
 namespace browser {
 
+// The header line of a dump, without ids and with them.
+inline constexpr std::string_view kDumpHeader = "step,index,shape,cx,cy,angle,vx,vy,angular_velocity";
+inline constexpr std::string_view kDumpHeaderWithIds = "step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity";
+
 class StateDump {
 public:
-    // Creates the partial file and writes the header line. `out` is the run's --out
+    // Creates the partial file (the header line waits for the first row). `out` is the run's --out
     // folder ("" for none), `inputs` the files the run reads. Throws OutputRefused when <path> may not be written (see
     // above), FileError when the partial file cannot be created; each one line naming
     // `path`.
@@ -57,9 +70,13 @@ public:
     // `kind` is the body's kind as the stage's scene files spell it, a plain word
     // (lower-case letters, digits, '_'); anything else throws std::invalid_argument
     // rather than write a row tools misread. Throws FileError when the write fails,
-    // std::logic_error after finish().
+    // std::logic_error after finish() or when the row has an id and the first row had
+    // none, or the other way round.
     void row(long step, std::size_t index, std::string_view kind, lib::Vec2 center, double angle, lib::Vec2 velocity,
              double angular_velocity);
+    // The same, with the body's id.
+    void row(long step, std::size_t index, std::uint64_t id, std::string_view kind, lib::Vec2 center, double angle,
+             lib::Vec2 velocity, double angular_velocity);
 
     // Completes the file and renames it to `path`. Throws FileError, and removes the
     // partial file, when any write failed or the rename is refused.
@@ -68,6 +85,8 @@ public:
     const std::filesystem::path& path() const { return path_; }
 
 private:
+    void write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view kind,
+                   lib::Vec2 center, double angle, lib::Vec2 velocity, double angular_velocity);
     [[noreturn]] void fail(const std::string& reason);
 
     std::filesystem::path path_;
@@ -77,6 +96,7 @@ private:
     bool inside_out_ = false;           // path_ is inside the --out folder
     std::ofstream out_;
     bool finished_ = false;
+    std::optional<bool> with_ids_;  // the first row's kind, once it is written
 };
 
 // A step that made a number no double can be: the run stops, naming the body and the

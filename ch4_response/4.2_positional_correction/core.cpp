@@ -69,6 +69,8 @@ void Core::keepFirstObjects(std::size_t count) {
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
+    // What the steps do to each pair is recorded only for the overlay to draw (physics.h).
+    physics_.keepResponses(window_.overlay);
     const int due = timer_.updatesDue(window_.clock.nowMs());
     for (int k = 0; k < due; ++k) update();
     if (due > 0) physics_.drawCollisions(window_.document.canvas);

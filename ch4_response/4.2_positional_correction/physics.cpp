@@ -6,21 +6,24 @@ namespace {
 
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
-// static one not at all, and the pair's centre of mass stays where it was.
+// static one not at all, and the pair's centre of mass stays where it was. The moves
+// are added to `response` when the overlay keeps one.
 void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
-                          PairResponse& response) {
+                          PairResponse* response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
-    response.moved_first += correction * -a.invMass();
-    response.moved_second += correction * b.invMass();
+    if (!response) return;
+    response->moved_first += correction * -a.invMass();
+    response->moved_second += correction * b.invMass();
 }
 
 // What a collision does to the pair. In this project: push them apart.
-// What it did goes into `response`.
+// What it did goes into `response`, the overlay's record of the pair (nullptr while
+// the overlay keeps none).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
-                      PairResponse& response) {
+                      PairResponse* response) {
     // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
     if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
@@ -36,6 +39,13 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
     if (info && info->normal().dot(b.center() - a.center()) < 0) info->changeDir();
     return info;
 }
+
+void Physics::keepResponses(bool keep) {
+    keep_responses_ = keep;
+    if (!keep) responses_.clear();
+}
+
+PairResponse* Physics::responseOf(PairKey pair) { return keep_responses_ ? &responses_[pair] : nullptr; }
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
@@ -54,7 +64,7 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
             const std::optional<CollisionInfo> info = findCollision(a, b);
             if (!info) continue;
             collisions_.push_back({i, j, *info});  // two static shapes too: the borders' corners
-            resolveCollision(a, b, *info, world, responses_[{i, j}]);
+            resolveCollision(a, b, *info, world, responseOf({i, j}));
         }
     }
 }

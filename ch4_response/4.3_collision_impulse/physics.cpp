@@ -8,15 +8,17 @@ namespace {
 
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
-// static one not at all, and the pair's centre of mass stays where it was.
+// static one not at all, and the pair's centre of mass stays where it was. The moves
+// are added to `response` when the overlay keeps one.
 void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
-                          PairResponse& response) {
+                          PairResponse* response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
-    response.moved_first += correction * -a.invMass();
-    response.moved_second += correction * b.invMass();
+    if (!response) return;
+    response->moved_first += correction * -a.invMass();
+    response->moved_second += correction * b.invMass();
 }
 
 // An impulse is a sudden change of momentum, j = m dv: it changes the velocity of a
@@ -46,13 +48,14 @@ Vec2 againstTheSliding(Vec2 velocity, Vec2 normal) {
 // tangent, friction takes away part of the sliding; the book's "simplistic" model
 // scales the impulse that would stop the slide by (1 + e) mu and caps it at jN
 // (Equation 3, not Coulomb's |jT| <= mu jN; see docs/errata.md).
-// What it did goes into `response`.
+// What it did goes into `response`, the overlay's record of the pair (nullptr while
+// the overlay keeps none).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
-                      PairResponse& response) {
+                      PairResponse* response) {
     // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
     if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
-    response.contact = (info.start() + info.end()) * 0.5;
+    if (response) response->contact = (info.start() + info.end()) * 0.5;
 
     const Vec2 normal = info.normal();  // from a to b
     const Vec2 relative_velocity = b.velocity() - a.velocity();
@@ -69,14 +72,14 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
     // Equation 2: after the impulse the normal speed is -e times what it was.
     const double jN = -(1 + restitution) * normal_speed / inv_mass_sum;
     applyImpulse(a, b, normal * jN);
-    response.normal_impulse += normal * jN;
+    if (response) response->normal_impulse += normal * jN;
 
     // The tangent points against the sliding, from the velocity before the impulse.
     const Vec2 tangent = againstTheSliding(relative_velocity, normal);
     double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / inv_mass_sum;
     jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, tangent * jT);
-    response.tangent_impulse += tangent * jT;
+    if (response) response->tangent_impulse += tangent * jT;
 }
 
 }  // namespace
@@ -89,6 +92,13 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
     if (info && info->normal().dot(b.center() - a.center()) < 0) info->changeDir();
     return info;
 }
+
+void Physics::keepResponses(bool keep) {
+    keep_responses_ = keep;
+    if (!keep) responses_.clear();
+}
+
+PairResponse* Physics::responseOf(PairKey pair) { return keep_responses_ ? &responses_[pair] : nullptr; }
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
@@ -110,7 +120,7 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
             // works on, for the tests, so two static shapes lying in each other are
             // left out of it.
             if (!(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world, responses_[{i, j}]);
+            resolveCollision(a, b, *info, world, responseOf({i, j}));
         }
     }
 }

@@ -46,8 +46,9 @@ struct Collision {
     CollisionInfo info;  // its normal points from the first shape towards the second
 };
 
-// What one step's relaxation passes did to a pair, added up over the passes. The engine
-// needs none of it; the overlay shows it (overlay.h).
+// What one step's relaxation passes did to a pair, added up over the passes. The book's
+// method needs none of it: the overlay shows it (overlay.h), and the physics keeps it
+// only while the overlay asks (keepResponses).
 struct PairResponse {
     Vec2 moved_first;      // how far positional correction moved the first shape
     Vec2 moved_second;     // and the second: the other way, in proportion to the inverse masses
@@ -70,13 +71,22 @@ public:
     // in the book; only its resolution leaves it as it is).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
-    // What the last step's passes did to every pair any of them resolved.
+
+    // The overlay's record. While it is kept, each step adds up what its passes did to
+    // every pair they resolved; while it is not, a step keeps no record at all and does
+    // no bookkeeping for it. The core keeps it while the overlay is on (core.cpp).
+    void keepResponses(bool keep);
+    // What the last step's passes did to every pair any of them resolved; empty while
+    // the record is not kept.
     const std::map<PairKey, PairResponse>& responses() const { return responses_; }
 
 private:
     void relaxationPass(ShapeList shapes, const WorldSettings& world);
+    // The overlay's record of `pair`, or nullptr while it keeps none.
+    PairResponse* responseOf(PairKey pair);
 
     std::vector<Collision> collisions_;
+    bool keep_responses_ = false;
     std::map<PairKey, PairResponse> responses_;
 };
 

@@ -67,6 +67,8 @@ void Core::keepFirstObjects(std::size_t count) {
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
+    // What the steps do to each pair is recorded only for the overlay to draw (physics.h).
+    physics_.keepResponses(window_.overlay);
     for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     drawOverlay(window_, *this);
 }

@@ -8,15 +8,17 @@ namespace {
 
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
-// static one not at all, and the pair's centre of mass stays where it was.
+// static one not at all, and the pair's centre of mass stays where it was. The moves
+// are added to `response` when the overlay keeps one.
 void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
-                          PairResponse& response) {
+                          PairResponse* response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
-    response.moved_first += correction * -a.invMass();
-    response.moved_second += correction * b.invMass();
+    if (!response) return;
+    response->moved_first += correction * -a.invMass();
+    response->moved_second += correction * b.invMass();
 }
 
 // Where the pair touches, seen from each shape's centre: the lever arms r of Figure
@@ -81,18 +83,21 @@ Vec2 againstTheSliding(Vec2 velocity, Vec2 normal) {
 // away part of the sliding; the book's "simplistic" model scales the impulse that
 // would stop the slide by (1 + e) mu and caps it at jN (not Coulomb's |jT| <= mu jN;
 // see docs/errata.md).
-// What it did goes into `response`.
+// What it did goes into `response`, the overlay's record of the pair (nullptr while
+// the overlay keeps none).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
-                      PairResponse& response) {
+                      PairResponse* response) {
     // Nothing moves two static shapes: 1/mA + 1/mB = 0, and every share below is 0 / 0.
     if (a.isStatic() && b.isStatic()) return;
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
 
     const Vec2 normal = info.normal();  // from a to b
     const LeverArms arms = leverArms(a, b, info);
-    response.contact = a.center() + arms.a;
-    response.arm_first = arms.a;
-    response.arm_second = arms.b;
+    if (response) {
+        response->contact = a.center() + arms.a;
+        response->arm_first = arms.a;
+        response->arm_second = arms.b;
+    }
     const Vec2 relative_velocity = velocityAt(b, arms.b) - velocityAt(a, arms.a);
     const double normal_speed = relative_velocity.dot(normal);
     // Moving apart already: the velocities need no help. (The positions above were
@@ -107,7 +112,7 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
     const double jN = -(1 + restitution) * normal_speed / impulseResponse(a, b, arms, normal);
     const double spin_a = a.angularVelocity(), spin_b = b.angularVelocity();
     applyImpulse(a, b, arms, normal * jN);
-    response.normal_impulse += normal * jN;
+    if (response) response->normal_impulse += normal * jN;
 
     // Equation 6. The tangent points against the sliding, from the velocity before the
     // normal impulse (which has changed the spin, and so the sliding, since).
@@ -115,9 +120,11 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
     double jT = -(1 + restitution) * relative_velocity.dot(tangent) * friction / impulseResponse(a, b, arms, tangent);
     jT = std::min(jT, jN);  // friction never pushes harder than the collision itself
     applyImpulse(a, b, arms, tangent * jT);
-    response.tangent_impulse += tangent * jT;
-    response.spin_first += a.angularVelocity() - spin_a;
-    response.spin_second += b.angularVelocity() - spin_b;
+    if (response) {
+        response->tangent_impulse += tangent * jT;
+        response->spin_first += a.angularVelocity() - spin_a;
+        response->spin_second += b.angularVelocity() - spin_b;
+    }
 }
 
 }  // namespace
@@ -130,6 +137,13 @@ std::optional<CollisionInfo> findCollision(const RigidShape& a, const RigidShape
     if (info && info->normal().dot(b.center() - a.center()) < 0) info->changeDir();
     return info;
 }
+
+void Physics::keepResponses(bool keep) {
+    keep_responses_ = keep;
+    if (!keep) responses_.clear();
+}
+
+PairResponse* Physics::responseOf(PairKey pair) { return keep_responses_ ? &responses_[pair] : nullptr; }
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
@@ -151,7 +165,7 @@ void Physics::relaxationPass(ShapeList shapes, const WorldSettings& world) {
             // works on, for the tests, so two static shapes lying in each other are
             // left out of it.
             if (!(a.isStatic() && b.isStatic())) collisions_.push_back({i, j, *info});
-            resolveCollision(a, b, *info, world, responses_[{i, j}]);
+            resolveCollision(a, b, *info, world, responseOf({i, j}));
         }
     }
 }

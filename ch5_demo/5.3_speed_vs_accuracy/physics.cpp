@@ -8,15 +8,17 @@ namespace {
 
 // Moves the two shapes apart along the normal by `rate` of their overlap, shared in
 // proportion to their inverse masses: a shape twice as heavy moves half as far, a
-// static one not at all, and the pair's centre of mass stays where it was.
+// static one not at all, and the pair's centre of mass stays where it was. The moves
+// are added to `response` when the overlay keeps one.
 void positionalCorrection(RigidShape& a, RigidShape& b, const CollisionInfo& info, double rate,
-                          PairResponse& response) {
+                          PairResponse* response) {
     const double amount = info.depth() / (a.invMass() + b.invMass()) * rate;
     const Vec2 correction = info.normal() * amount;  // the normal points from a to b
     a.move(correction * -a.invMass());
     b.move(correction * b.invMass());
-    response.moved_first += correction * -a.invMass();
-    response.moved_second += correction * b.invMass();
+    if (!response) return;
+    response->moved_first += correction * -a.invMass();
+    response->moved_second += correction * b.invMass();
 }
 
 // Where the pair touches, seen from each shape's centre: the lever arms r of Figure
@@ -92,18 +94,21 @@ Vec2 againstTheSliding(Vec2 velocity, Vec2 normal) {
 // law of restitution at the contact, Equation 4). Along the tangent, friction takes
 // away part of the sliding (see frictionImpulse; docs/errata.md, "Friction"). Never
 // called for two static shapes: 1/mA + 1/mB = 0 would make every share below 0 / 0.
-// What it did goes into `response`.
+// What it did goes into `response`, the overlay's record of the pair (nullptr while
+// the overlay keeps none).
 void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, const WorldSettings& world,
-                      PairResponse& response) {
+                      PairResponse* response) {
     if (world.positional_correction) positionalCorrection(a, b, info, world.correction_rate, response);
 
     const Vec2 normal = info.normal();  // from a to b
     // Without rotation the impulses act as if through the centres: zero lever arms drop
     // every angular term (w x r, (r x d)^2 / I, r x j) and leave the rest as it is.
     const LeverArms arms = world.rotation ? leverArms(a, b, info) : LeverArms{};
-    response.contact = a.center() + arms.a;
-    response.arm_first = arms.a;
-    response.arm_second = arms.b;
+    if (response) {
+        response->contact = a.center() + arms.a;
+        response->arm_first = arms.a;
+        response->arm_second = arms.b;
+    }
     const Vec2 relative_velocity = velocityAt(b, arms.b) - velocityAt(a, arms.a);
     const double normal_speed = relative_velocity.dot(normal);
     // Moving apart already: the velocities need no help. (The positions above were
@@ -118,7 +123,7 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
     const double jN = -(1 + restitution) * normal_speed / impulseResponse(a, b, arms, normal);
     const double spin_a = a.angularVelocity(), spin_b = b.angularVelocity();
     applyImpulse(a, b, arms, normal * jN);
-    response.normal_impulse += normal * jN;
+    if (response) response->normal_impulse += normal * jN;
     if (world.friction) {
         // Equation 6. The book takes the tangent, and the sliding, from the velocity before
         // the normal impulse. But that impulse has turned the shapes, and so changed the
@@ -133,10 +138,12 @@ void resolveCollision(RigidShape& a, RigidShape& b, const CollisionInfo& info, c
         const double jT = frictionImpulse(sliding_velocity.dot(tangent), impulseResponse(a, b, arms, tangent), jN,
                                           restitution, friction, world.friction_model);
         applyImpulse(a, b, arms, tangent * jT);
-        response.tangent_impulse += tangent * jT;
+        if (response) response->tangent_impulse += tangent * jT;
     }
-    response.spin_first += a.angularVelocity() - spin_a;
-    response.spin_second += b.angularVelocity() - spin_b;
+    if (response) {
+        response->spin_first += a.angularVelocity() - spin_a;
+        response->spin_second += b.angularVelocity() - spin_b;
+    }
 }
 
 }  // namespace
@@ -154,20 +161,12 @@ std::optional<CollisionInfo> narrowPhase(const RigidShape& a, const RigidShape& 
     return info;
 }
 
-// The record of the pair just resolved. Looked up afresh, a thousand pairs would cost a
-// walk down the map's tree, some ten comparisons and as many cache misses, for every
-// resolution. But every broad phase meets a pass's pairs in ascending order, and the
-// pairs a pass resolves are mostly those the pass before resolved: so the pair sits
-// at, or a few entries after, the place where the last one was found. Walking on from
-// there costs a comparison per entry passed, and a pair not yet in the record is put
-// in at that place, which std::map takes as a hint (constant time). A pair met out of
-// order would only cost the tree walk: try_emplace checks the hint. The map ends up
-// holding the same sums, added in the same order: only the time changes.
-PairResponse& Physics::responseOf(PairKey pair) {
-    while (next_response_ != responses_.end() && next_response_->first < pair) ++next_response_;
-    next_response_ = responses_.try_emplace(next_response_, pair);
-    return (next_response_++)->second;
+void Physics::keepResponses(bool keep) {
+    keep_responses_ = keep;
+    if (!keep) responses_.clear();
 }
+
+PairResponse* Physics::responseOf(PairKey pair) { return keep_responses_ ? &responses_[pair] : nullptr; }
 
 void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     collisions_.clear();
@@ -177,7 +176,6 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {
         // The record keeps what the last pass found.
         const bool last_pass = pass + 1 == world.relaxation_iterations;
-        next_response_ = responses_.begin();
         // Every pair is resolved as soon as it is found, so the pairs after it already
         // see the shapes where that correction left them. The broad phase walks each
         // row's partners in ascending order, so pairs are met in the book's order

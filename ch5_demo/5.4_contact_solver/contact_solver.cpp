@@ -1,7 +1,6 @@
 #include "contact_solver.h"
 
 #include <algorithm>
-#include <functional>
 #include <numeric>
 
 #include "narrow_phase.h"
@@ -81,13 +80,8 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, cons
     last_.swap(contacts_);
     contacts_.clear();
     last_index_.clear();
-    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].shape_a, last_[k].shape_b}, k});
-    // Pointers compared by std::less: a total order, whatever the addresses.
-    const auto by_pair = [](const auto& x, const auto& y) {
-        return std::less<const RigidShape*>{}(x.first.first, y.first.first) ||
-               (x.first.first == y.first.first && std::less<const RigidShape*>{}(x.first.second, y.first.second));
-    };
-    std::sort(last_index_.begin(), last_index_.end(), by_pair);
+    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].id_a, last_[k].id_b}, k});
+    std::sort(last_index_.begin(), last_index_.end());
     persisted_ = 0;
 
     broad_phase.startStep(shapes, 1);
@@ -101,15 +95,15 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, cons
         ContactManifold manifold = contactManifold(a, b, *info);
         Contact contact{.a = i,
                         .b = j,
-                        .shape_a = &a,
-                        .shape_b = &b,
+                        .id_a = a.id(),
+                        .id_b = b.id(),
                         .normal = manifold.normal,
                         .tangent = {manifold.normal.y, -manifold.normal.x},
                         .friction = world.friction ? std::min(a.friction(), b.friction()) : 0.0,
                         .restitution = std::min(a.restitution(), b.restitution()),
                         .points = {}};
-        const std::pair<PairKey, std::size_t> wanted{{&a, &b}, 0};
-        const auto last = std::lower_bound(last_index_.begin(), last_index_.end(), wanted, by_pair);
+        const std::pair<PairKey, std::size_t> wanted{{a.id(), b.id()}, 0};
+        const auto last = std::lower_bound(last_index_.begin(), last_index_.end(), wanted);
         const bool met_before = last != last_index_.end() && last->first == wanted.first;
         for (const ContactPoint& point : manifold.points) {
             Point solved{.contact = point};

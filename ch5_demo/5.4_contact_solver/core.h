@@ -48,11 +48,13 @@ public:
     double height() const;  // 450 px, the book's mHeight
 
     // Takes a shape into the world (the book's shapes push themselves onto mAllObjects
-    // when constructed) and returns it as it now lives in the list.
+    // when constructed), gives it the next id (rigid_shape.h), and returns it as it now
+    // lives in the list.
     template <std::derived_from<RigidShape> Shape>
     Shape& add(Shape shape) {
         auto owned = std::make_unique<Shape>(std::move(shape));
         Shape& added = *owned;
+        added.id_ = next_id_++;
         all_objects_.push_back(std::move(owned));
         return added;
     }
@@ -102,6 +104,7 @@ private:
     browser::Window& window_;
     WorldSettings settings_;
     std::vector<std::unique_ptr<RigidShape>> all_objects_;  // the book's mAllObjects
+    BodyId next_id_ = 1;  // the next shape's id: the counter only goes up, so no id is given twice
     std::size_t selected_ = 0;
     FixedStepTimer timer_;
     Physics physics_;  // the book's gEngine.Physics

@@ -21,6 +21,7 @@
 // velocity that update() integrates, and the attributes the collision response will
 // use (mass, rotational inertia, friction, restitution).
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -53,10 +54,21 @@ struct InvalidShape : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
+// Who a body is, from 5.4 on, where state first outlives a step: the number the world
+// gives a shape when it takes it in (Core::add), from a counter of its own that never
+// goes back, so no two shapes of a world ever share one. A shape removed and a new one
+// made after it are told apart by it, though the new one may take the old one's place
+// in the list, and even its very address: the allocator hands freed memory out again.
+// What is kept from one step to the next (warm starting, contact_solver.h) names
+// shapes by id, never by place or address.
+using BodyId = std::uint64_t;
+
 class RigidShape {
 public:
     virtual ~RigidShape() = default;
 
+    // The shape's id in its world (BodyId above); 0 until a world takes it in.
+    BodyId id() const { return id_; }
     ShapeType type() const { return type_; }
     Vec2 center() const { return center_; }
     double angle() const { return angle_; }  // radians; turns clockwise on screen (y down)
@@ -117,6 +129,8 @@ protected:
     // is known (a base class constructor cannot reach the shape's own formula yet).
     void updateInertia();
 
+    friend class Core;  // only the world gives out ids, once for each shape it takes in
+    BodyId id_ = 0;
     ShapeType type_;
     Vec2 center_;
     double angle_ = 0.0;

@@ -42,6 +42,13 @@ void drawFaces(browser::Canvas& canvas, const RigidShape& a, const RigidShape& b
     draw::line(canvas, cut.from, cut.to, kIncidentColor);
 }
 
+// The shape the solver met at `index` as `id`, if it is still there: a shape that left
+// after the step (out of bounds, the R key) has moved those after it up the list.
+const RigidShape* stillAt(const Core& core, std::size_t index, BodyId id) {
+    if (index >= core.objectCount() || core.object(index).id() != id) return nullptr;
+    return &core.object(index);
+}
+
 }  // namespace
 
 void drawContacts(browser::Canvas& canvas, const Core& core, std::vector<browser::LegendEntry>& legend) {
@@ -49,7 +56,9 @@ void drawContacts(browser::Canvas& canvas, const Core& core, std::vector<browser
     const double dt = core.settings().dt / core.settings().substeps;
     for (const ContactSolver::Contact& contact : core.physics().contactSolver().contacts()) {
         const ContactFeatures features = featuresOf(contact.points[0].contact.key);
-        if (!features.single_point) drawFaces(canvas, *contact.shape_a, *contact.shape_b, features);
+        const RigidShape* a = stillAt(core, contact.a, contact.id_a);
+        const RigidShape* b = stillAt(core, contact.b, contact.id_b);
+        if (!features.single_point && a && b) drawFaces(canvas, *a, *b, features);
         for (const ContactSolver::Point& point : contact.points) {
             const Vec2 at = point.contact.position;
             draw::arrow(canvas, at, at + contact.normal * (point.normal_impulse / dt * kPxPerForce), kNormalColor);

@@ -98,10 +98,9 @@ public:
         double split_impulse = 0.0;
     };
     struct Contact {
-        std::size_t a, b;           // places in the shape list
-        const RigidShape* shape_a;  // who they are, to find the pair again next step
-        const RigidShape* shape_b;
-        Vec2 normal;  // from a towards b
+        std::size_t a, b;   // places in the shape list, in this step
+        BodyId id_a, id_b;  // who they are, to find the pair again next step
+        Vec2 normal;        // from a towards b
         Vec2 tangent;
         double friction, restitution;
         UpToTwo<Point> points;
@@ -135,11 +134,11 @@ private:
     std::vector<SolverBody> bodies_;
     std::vector<Contact> contacts_;
     // The last step's contacts, and an index of them by their pair of shapes, sorted so
-    // that a pair is found by bisection. Shapes are named by their addresses, which stay
-    // put while they live (the core owns each through a unique_ptr); a shape removed and
-    // a new one made at the same address between two steps could inherit its contact's
-    // impulses for one step, only ever as a first guess that the iterations correct.
-    using PairKey = std::pair<const RigidShape*, const RigidShape*>;
+    // that a pair is found by bisection. Shapes are named by their ids (rigid_shape.h):
+    // not by their places, which shift when a shape leaves the list, nor by their
+    // addresses, which a shape made after a removed one may take over. Either would hand
+    // the new shape the impulses of a contact it never had.
+    using PairKey = std::pair<BodyId, BodyId>;
     std::vector<Contact> last_;
     std::vector<std::pair<PairKey, std::size_t>> last_index_;
     // The contacts of sleeping islands, as they fell asleep. The pass no longer meets

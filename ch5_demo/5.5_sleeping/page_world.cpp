@@ -54,6 +54,7 @@ browser::PageWorld pageWorld(Core& core) {
                     for (std::size_t i = 0; i < core.objectCount(); ++i) {
                         const RigidShape& shape = core.object(i);
                         objects.push_back({.kind = shapeName(shape.type()),
+                                           .id = shape.id(),
                                            .center = shape.center(),
                                            .angle = shape.angle(),
                                            .velocity = shape.velocity(),

@@ -1,7 +1,6 @@
 #include "contact_solver.h"
 
 #include <algorithm>
-#include <functional>
 #include <numeric>
 
 #include "narrow_phase.h"
@@ -77,18 +76,11 @@ namespace {
 // Whether the contact still names the shapes at its places in the list: removing a
 // shape moves the ones after it up the list.
 bool stillInPlace(const ContactSolver::Contact& contact, ShapeList shapes) {
-    return contact.a < shapes.size() && contact.b < shapes.size() && shapes[contact.a].get() == contact.shape_a &&
-           shapes[contact.b].get() == contact.shape_b;
+    return contact.a < shapes.size() && contact.b < shapes.size() && shapes[contact.a]->id() == contact.id_a &&
+           shapes[contact.b]->id() == contact.id_b;
 }
 bool bothResting(const ContactSolver::Contact& contact, ShapeList shapes) {
     return shapes[contact.a]->isResting() && shapes[contact.b]->isResting();
-}
-// The index's order. Pointers compared by std::less: a total order, whatever the
-// addresses.
-template <class Entry>
-bool byPair(const Entry& x, const Entry& y) {
-    return std::less<const RigidShape*>{}(x.first.first, y.first.first) ||
-           (x.first.first == y.first.first && std::less<const RigidShape*>{}(x.first.second, y.first.second));
 }
 }  // namespace
 
@@ -114,8 +106,8 @@ void ContactSolver::indexLastContacts(ShapeList shapes, std::uint64_t wakes) {
     });
 
     last_index_.clear();
-    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].shape_a, last_[k].shape_b}, k});
-    std::sort(last_index_.begin(), last_index_.end(), byPair<std::pair<PairKey, std::size_t>>);
+    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].id_a, last_[k].id_b}, k});
+    std::sort(last_index_.begin(), last_index_.end());
 }
 
 // One look at every pair the broad phase hands out (nothing moves while it looks), and
@@ -157,16 +149,15 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
         ContactManifold manifold = contactManifold(a, b, *info);
         Contact contact{.a = i,
                         .b = j,
-                        .shape_a = &a,
-                        .shape_b = &b,
+                        .id_a = a.id(),
+                        .id_b = b.id(),
                         .normal = manifold.normal,
                         .tangent = {manifold.normal.y, -manifold.normal.x},
                         .friction = world.friction ? std::min(a.friction(), b.friction()) : 0.0,
                         .restitution = std::min(a.restitution(), b.restitution()),
                         .points = {}};
-        const std::pair<PairKey, std::size_t> wanted{{&a, &b}, 0};
-        const auto last =
-            std::lower_bound(last_index_.begin(), last_index_.end(), wanted, byPair<std::pair<PairKey, std::size_t>>);
+        const std::pair<PairKey, std::size_t> wanted{{a.id(), b.id()}, 0};
+        const auto last = std::lower_bound(last_index_.begin(), last_index_.end(), wanted);
         const bool met_before = last != last_index_.end() && last->first == wanted.first;
         for (const ContactPoint& point : manifold.points) {
             Point solved{.contact = point};

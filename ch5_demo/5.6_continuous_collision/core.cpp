@@ -89,6 +89,8 @@ void Core::keepFirstObjects(std::size_t count) {
 void Core::runGameLoop() {
     updateUIEcho();
     draw();
+    // What the steps do to each pair is recorded only for the overlay to draw (physics.h).
+    physics_.keepResponses(window_.overlay);
     for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     drawOverlay(window_, *this);
 }
@@ -143,7 +145,8 @@ void Core::removeOutOfBounds() {
 }
 
 // The echo panel holds about 24 lines of 37 letters (common/page.cpp), so the key help
-// is kept short; from this stage it follows the settings without a blank line.
+// is kept short. The book's lines fill it: the settings beyond the book, with their
+// keys, get a section of their own, on a band under the page (Document::beyond_echo).
 void Core::updateUIEcho() {
     std::string echo = "Selected Object:\n";
     if (selected_ < all_objects_.size()) {
@@ -161,25 +164,32 @@ void Core::updateUIEcho() {
     }
     echo.append("  Positional Correction: ").append(echoFlag(settings_.positional_correction)).append("\n");
     echo.append("  Movement: ").append(echoFlag(settings_.movement)).append("\n");
-    echo.append("  Sleeping: ").append(echoFlag(settings_.sleep)).append(", awake ");
-    echo.append(std::to_string(awakeCount()))
-        .append("/")
-        .append(std::to_string(movingCount(all_objects_)))
-        .append("\n");
-    echo.append("  Continuous: ").append(echoFlag(settings_.continuous)).append("\n");
     echo +=
+        "\n"
         "Control: of selected object\n"
         "  Num or Up/Down Arrow: Select Object\n"
         "  WASD + QE: Position [Move + Rotate]\n"
         "  IJKL + UO: Velocity [lin + ang]\n"
-        "  ZX CV BN: Mass Friction Restitution\n"
+        "  ZX: Mass [Decrease/Increase]\n"
+        "  CV: Friction [Decrease/Increase]\n"
+        "  BN: Restitution [Decrease/Increase]\n"
         "  M: Positional Correction [On/Off]\n"
         "  ,: Movement [On/Off]\n"
-        "  Y P: Sleeping, Continuous [On/Off]\n"
         "  H: Excite all objects\n"
         "  F/G: New [Rect/Circle] at selected\n"
         "  R: Reset System\n";
     window_.document.ui_echo = echo;
+    std::string beyond = "Beyond the book:\n";
+    beyond.append("  Sleeping: ").append(echoFlag(settings_.sleep)).append(", awake ");
+    beyond.append(std::to_string(awakeCount()))
+        .append("/")
+        .append(std::to_string(movingCount(all_objects_)))
+        .append("\n");
+    beyond.append("  Continuous: ").append(echoFlag(settings_.continuous)).append("\n");
+    beyond +=
+        "  Y: Sleeping [On/Off]\n"
+        "  P: Continuous [On/Off]\n";
+    window_.document.beyond_echo = beyond;
 }
 
 void Core::draw() {

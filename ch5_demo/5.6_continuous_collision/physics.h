@@ -47,8 +47,9 @@
 
 namespace engine {
 
-// What one step's relaxation passes did to a pair, added up over the passes. The engine
-// needs none of it; the overlay shows it (overlay.h).
+// What one step's relaxation passes did to a pair, added up over the passes. The book's
+// method needs none of it: the overlay shows it (overlay.h), and the physics keeps it
+// only while the overlay asks (keepResponses).
 struct PairResponse {
     Vec2 moved_first;      // how far positional correction moved the first shape
     Vec2 moved_second;     // and the second: the other way, in proportion to the inverse masses
@@ -73,7 +74,13 @@ public:
     // pair, then the solver (contact_solver.h).
     void collision(ShapeList shapes, const WorldSettings& world);
     const std::vector<Collision>& collisions() const { return collisions_; }
-    // What the last step's passes did to every pair any of them resolved.
+
+    // The overlay's record. While it is kept, each step adds up what its passes did to
+    // every pair they resolved; while it is not, a step keeps no record at all and does
+    // no bookkeeping for it. The core keeps it while the overlay is on (core.cpp).
+    void keepResponses(bool keep);
+    // What the last step's passes did to every pair any of them resolved; empty while
+    // the record is not kept.
     const std::map<PairKey, PairResponse>& responses() const { return responses_; }
     // For the core, when it takes shapes out of the list: the record's places no
     // longer name the shapes the step worked on.
@@ -85,13 +92,12 @@ public:
     Islands& islands() { return islands_; }
 
 private:
-    // The record of `pair`, made when the step first resolves it (physics.cpp).
-    PairResponse& responseOf(PairKey pair);
+    // The overlay's record of `pair`, or nullptr while it keeps none.
+    PairResponse* responseOf(PairKey pair);
 
     std::vector<Collision> collisions_;
+    bool keep_responses_ = false;
     std::map<PairKey, PairResponse> responses_;
-    // Where the pass's next pair most likely sits in the record (responseOf).
-    std::map<PairKey, PairResponse>::iterator next_response_;
     BroadPhase broad_phase_;
     ContactSolver contact_solver_;
     Islands islands_;

@@ -141,6 +141,29 @@ TEST_CASE("files that are not state dumps are refused with their line", "[first_
     CHECK(refused(kHeader + kStart) == "accepted");
 }
 
+TEST_CASE("a dump with ids (5.4 on) reads, and compares body by body with one without", "[first_divergence_test]") {
+    const std::string with_ids = "step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity\n";
+    std::istringstream in(with_ids + "0,0,1,rectangle,100,50,0,0,0,0\n0,1,2,circle,300,60,0,6,0,0.5\n" +
+                          "1,0,1,rectangle,100,50.1,0,0,1,0\n1,1,2,circle,300.1,60,0.01,6,0,0.5\n");
+    const auto ids = browser::parse_dump(in, "ids.csv");
+    REQUIRE(ids.size() == 4);
+    CHECK(ids[1].id == 2u);
+    CHECK(ids[1].shape == "circle");
+    CHECK(ids[1].values[5] == 0.5);
+    CHECK_FALSE(dump(kStart)[0].id.has_value());
+    CHECK_FALSE(browser::first_divergence(ids, dump(kStart + kStep1Box + kStep1Circle)).has_value());
+    const auto moved = dump(kStart + kStep1Box + "1,1,circle,300.1,60,0.01,6,0,0.7\n");
+    const auto divergence = browser::first_divergence(ids, moved);
+    REQUIRE(divergence.has_value());
+    CHECK(divergence->index == 1);
+    CHECK(divergence->field == "angular_velocity");
+
+    std::istringstream short_row(with_ids + "0,0,rectangle,100,50,0,0,0,0\n");
+    CHECK_THROWS_WITH(browser::parse_dump(short_row, "bad.csv"), "bad.csv:2: a row has 10 fields, this has 9");
+    std::istringstream bad_id(with_ids + "0,0,x,rectangle,100,50,0,0,0,0\n");
+    CHECK_THROWS_WITH(browser::parse_dump(bad_id, "bad.csv"), "bad.csv:2: the id must be a whole number");
+}
+
 TEST_CASE("the errata entry that explains a divergence, by stage and sign", "[first_divergence_test]") {
     const auto a = dump(kStart + kStep1Box + kStep1Circle);
     const auto spun = dump(kStart + kStep1Box + "1,1,circle,300.1,60,0.01,6,0,0.7\n");

@@ -16,6 +16,7 @@
 #include "contact_sheet.h"
 #include "near.h"
 #include "page.h"
+#include "text.h"
 
 using browser::Canvas;
 using browser::Color;
@@ -577,6 +578,42 @@ TEST_CASE("page: at scale 2 the frame, the panel and its text are twice as large
     CHECK(page2.at(2, 100) == browser::colors::kWhite);
     const browser::Image shrunk = browser::shrink(page2, 2);
     CHECK(shrunk.rgba == page.rgba);
+}
+
+TEST_CASE("page: a stage's section beyond the book goes on a band under the page, the book's page unchanged") {
+    for (const int scale : {1, 2}) {
+        browser::Document document{Canvas(200, 120, scale), "Selected Object:\n  Id: 0"};
+        document.canvas.beginPath();
+        document.canvas.moveTo(20.5, 60.5);
+        document.canvas.lineTo(180.5, 60.5);
+        document.canvas.stroke();
+        const browser::Image book = browser::render_page(document);
+        // Three lines; the last one too long for the panel, so wrapped onto a fourth.
+        document.beyond_echo = "Beyond the book:\n  Sleeping: true\n  " + std::string(40, 'W') + " end";
+        const browser::Image page = browser::render_page(document);
+        // The band: four lines and a half margin above and below them.
+        REQUIRE(page.width == book.width);
+        REQUIRE(page.height == book.height + (4 * browser::text_line_height() + 10) * scale);
+        for (int y = 0; y < book.height; ++y) {
+            for (int x = 0; x < book.width; ++x) REQUIRE(page.at(x, y) == book.at(x, y));
+        }
+        // Ink in the band under the panel, on each of its four lines; none under the canvas.
+        int inked_lines = 0, ink_under_canvas = 0;
+        for (int line = 0; line < 4; ++line) {
+            bool inked = false;
+            for (int y = book.height + (5 + line * browser::text_line_height()) * scale;
+                 y < book.height + (5 + (line + 1) * browser::text_line_height()) * scale; ++y) {
+                for (int x = 0; x < page.width; ++x) {
+                    if (page.at(x, y) != browser::colors::kBlack) continue;
+                    inked = inked || x >= 200 * scale;
+                    ink_under_canvas += x < 200 * scale;
+                }
+            }
+            inked_lines += inked;
+        }
+        CHECK(inked_lines == 4);
+        CHECK(ink_under_canvas == 0);
+    }
 }
 
 TEST_CASE("page: the live window's status line goes under the page, which stays as it is") {

@@ -148,6 +148,26 @@ TEST_CASE("state_dump: a dump with no rows is just the header") {
     CHECK(lines_of(file) == std::vector<std::string>{kHeader});
 }
 
+TEST_CASE("state_dump: rows with ids get the id column beside the index, and the dump keeps to one kind") {
+    ScratchFolder folder("ids");
+    const fs::path file = folder.path / "dump.csv";
+    StateDump dump(file);
+    dump.row(0, 0, 1, "rectangle", {1, 2}, 0, {0, 0}, 0);
+    dump.row(0, 1, 7, "circle", {3, 4}, 0.5, {0, 0}, 0);
+    // A row without an id in a dump with ids would shift every column after it.
+    CHECK_THROWS_AS(dump.row(1, 0, "rectangle", {1, 2}, 0, {0, 0}, 0), std::logic_error);
+    dump.finish();
+    CHECK(lines_of(file) == std::vector<std::string>{"step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity",
+                                                     "0,0,1,rectangle,1,2,0,0,0,0", "0,1,7,circle,3,4,0.5,0,0,0"});
+
+    const fs::path plain = folder.path / "plain.csv";
+    StateDump without(plain);
+    without.row(0, 0, "circle", {3, 4}, 0, {0, 0}, 0);
+    CHECK_THROWS_AS(without.row(0, 1, 2, "circle", {3, 4}, 0, {0, 0}, 0), std::logic_error);
+    without.finish();
+    CHECK(lines_of(plain) == std::vector<std::string>{kHeader, "0,0,circle,3,4,0,0,0,0"});
+}
+
 TEST_CASE("state_dump: a file that cannot be created throws a one-line FileError naming it") {
     ScratchFolder folder("cannot_open");
     for (const fs::path& file : {folder.path / "no_such_folder" / "dump.csv", folder.path}) {

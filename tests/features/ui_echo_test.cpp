@@ -87,6 +87,27 @@ TEST_CASE("ui echo: the mass is 1 over the inverse mass rounded to 3 digits, as 
     }
 }
 
+TEST_CASE("ui echo: the book's lines, each whole and in the book's order, after a blank line") {
+    // The key help every stage from 4.1 shows; a stage beyond the book puts its own
+    // settings and keys in a section of their own (Document::beyond_echo), never
+    // folded into the book's lines.
+    test::StageFixture page;
+    page.frame();
+    const std::string& echo = page.window.document.ui_echo;
+    std::size_t from = echo.find("\n\nControl: of selected object\n");
+    REQUIRE(from != std::string::npos);
+    for (const char* line :
+         {"  Num or Up/Down Arrow: Select Object\n", "  WASD + QE: Position [Move + Rotate]\n",
+          "  IJKL + UO: Velocity [lin + ang]\n", "  ZX: Mass [Decrease/Increase]\n",
+          "  CV: Friction [Decrease/Increase]\n", "  BN: Restitution [Decrease/Increase]\n", "  ,: Movement [On/Off]\n",
+          "  H: Excite all objects\n", "  F/G: New [Rect/Circle] at selected\n", "  R: Reset System\n"}) {
+        const std::size_t at = echo.find(line, from);
+        INFO(line << "in\n" << echo);
+        CHECK(at != std::string::npos);
+        if (at != std::string::npos) from = at;
+    }
+}
+
 TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
     test::StageFixture page;
     test::buildBookScene(page.core, page.random);
@@ -104,6 +125,12 @@ TEST_CASE("ui echo: fits the panel, even with the longest numbers") {
                            line.size());
     }
     test::expectAtMost("lines of the echo: at most 24, what the page's panel shows", kPanelLines, lines);
+    // A stage's own section (beyond the book, under the page) is as narrow.
+    std::istringstream beyond(page.window.document.beyond_echo);
+    for (std::string line; std::getline(beyond, line);) {
+        INFO("beyond the book: \"" << line << "\"");
+        test::expectAtMost("letters of a line beyond the book: at most 37, as the panel's", kPanelLetters, line.size());
+    }
 }
 
 }  // namespace ui_echo_test

@@ -825,8 +825,11 @@ TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sl
     REQUIRE(world.stepUntilAllAsleep());
     world.page.core.select(0);
     world.page.core.runGameLoop();
-    const std::string& echo = world.page.window.document.ui_echo;
-    CHECK(echo.find("  Sleeping: true, awake 0/4\n") != std::string::npos);
+    // In the section beyond the book, under the page: the book's lines keep the panel.
+    const std::string& beyond = world.page.window.document.beyond_echo;
+    CHECK(beyond.find("Beyond the book:\n  Sleeping: true, awake 0/4\n") == 0);
+    CHECK(beyond.find("  Y: Sleeping [On/Off]\n") != std::string::npos);
+    CHECK(world.page.window.document.ui_echo.find("Sleeping") == std::string::npos);
     // The lone box at x = 150: its left side, x = 130, drawn gray from y 380 to 420.
     const browser::Image& image = world.page.window.document.canvas.pixels();
     const auto pixel = [&](int x, int y) {
@@ -846,7 +849,7 @@ TEST_CASE("s5_5: the panel shows how many of the moving shapes are awake, and sl
     CHECK(blue == 0);
     world.page.press(browser::Key::H);
     world.page.core.runGameLoop();
-    CHECK(world.page.window.document.ui_echo.find("  Sleeping: true, awake 4/4\n") != std::string::npos);
+    CHECK(world.page.window.document.beyond_echo.find("  Sleeping: true, awake 4/4\n") != std::string::npos);
 }
 
 }  // namespace s5_5_test

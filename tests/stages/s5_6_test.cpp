@@ -406,12 +406,25 @@ TEST_CASE("s5_6: the rest of the impact's step is lost: the bounce lags the anal
     CHECK_THAT(ball.velocity().x, test::near(-6000, 1e-9));
 }
 
-TEST_CASE("s5_6: P turns continuous collision off and on live") {
+TEST_CASE("s5_6: P turns continuous collision off and on live; the section beyond the book says so") {
     test::WorldFixture page(shootingWorld(engine::SolverKind::book, true));
+    // The setting and its key are in the section beyond the book, under the page
+    // (Document::beyond_echo); the book's lines in the panel never carry them.
+    const auto frame = [&page] {
+        page.window.clock.advanceFrame();
+        page.core.runGameLoop();
+        const browser::Document& document = page.window.document;
+        CHECK(document.beyond_echo.find("  P: Continuous [On/Off]\n") != std::string::npos);
+        CHECK(document.ui_echo.find("Continuous") == std::string::npos);
+        return document.beyond_echo;
+    };
+    CHECK(frame().find("  Continuous: true\n") != std::string::npos);
     page.press(browser::Key::P);
     CHECK_FALSE(page.core.settings().continuous);
+    CHECK(frame().find("  Continuous: false\n") != std::string::npos);
     page.press(browser::Key::P);
     CHECK(page.core.settings().continuous);
+    CHECK(frame().find("  Continuous: true\n") != std::string::npos);
 }
 
 }  // namespace s5_6_test

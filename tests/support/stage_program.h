@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -104,10 +106,12 @@ inline void checkRefused(const ScratchFolder& folder, const std::string& command
     CHECK(folder.files() == files);
 }
 
-// One line of a state dump: step,index,shape,cx,cy,angle,vx,vy,angular_velocity.
+// One line of a state dump: step,index,shape,cx,cy,angle,vx,vy,angular_velocity, and
+// from 5.4 on the body's id after the index (common/state_dump.h).
 struct DumpRow {
     long step = 0;
     std::size_t index = 0;
+    std::optional<std::uint64_t> id;
     std::string shape;
     double cx = 0, cy = 0, angle = 0, vx = 0, vy = 0, angular_velocity = 0;
 };
@@ -117,12 +121,21 @@ inline std::vector<DumpRow> readDump(const std::filesystem::path& file) {
     std::istringstream text(readText(file));
     std::string line;
     std::getline(text, line);
-    REQUIRE(line == "step,index,shape,cx,cy,angle,vx,vy,angular_velocity");
+    const bool ids = line == "step,index,id,shape,cx,cy,angle,vx,vy,angular_velocity";
+    REQUIRE((ids || line == "step,index,shape,cx,cy,angle,vx,vy,angular_velocity"));
     std::vector<DumpRow> rows;
     while (std::getline(text, line)) {
         std::vector<std::string> field;
         std::istringstream cells(line);
         for (std::string cell; std::getline(cells, cell, ',');) field.push_back(cell);
+        std::optional<std::uint64_t> id;
+        if (ids) {
+            REQUIRE(field.size() == 10);
+            std::size_t used = 0;
+            id = std::stoull(field[2], &used);
+            REQUIRE(used == field[2].size());
+            field.erase(field.begin() + 2);
+        }
         REQUIRE(field.size() == 9);
         const auto number = [](const std::string& cell) {
             std::size_t used = 0;
@@ -130,7 +143,7 @@ inline std::vector<DumpRow> readDump(const std::filesystem::path& file) {
             REQUIRE(used == cell.size());
             return value;
         };
-        rows.push_back({std::stol(field[0]), std::stoul(field[1]), field[2], number(field[3]), number(field[4]),
+        rows.push_back({std::stol(field[0]), std::stoul(field[1]), id, field[2], number(field[3]), number(field[4]),
                         number(field[5]), number(field[6]), number(field[7]), number(field[8])});
     }
     return rows;
