@@ -48,9 +48,9 @@ std::size_t ContactSolver::pointCount() const {
                            [](std::size_t sum, const Contact& contact) { return sum + contact.points.size(); });
 }
 
-void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
-                         std::vector<Collision>& found) {
-    findContacts(shapes, broad_phase, islands, world, found);
+void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+                         const WorldSettings& world, std::vector<Collision>& found) {
+    findContacts(shapes, broad_phase, islands, events, world, found);
     prepare(shapes, world);
     if (world.warm_starting) warmStart();
     switch (world.position_method) {
@@ -113,13 +113,13 @@ void ContactSolver::indexLastContacts(ShapeList shapes, std::uint64_t wakes) {
 // One look at every pair the broad phase hands out (nothing moves while it looks), and
 // for each pair that overlaps its contact points, each matched by key with the points
 // of the same pair in the last step.
-void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands,
+void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
                                  const WorldSettings& world, std::vector<Collision>& found) {
     last_.swap(contacts_);
     contacts_.clear();
     indexLastContacts(shapes, islands.wakeCount());
     const std::size_t found_before = found.size();
-    if (!meetPairs(shapes, broad_phase, islands, world, found)) return;
+    if (!meetPairs(shapes, broad_phase, islands, events, world, found)) return;
     // An awake shape reached a sleeping island in the middle of the pass, and woke it:
     // the island's own pairs that the pass met before that were passed over as asleep.
     // Nothing has moved yet, so the pass runs again, and the island is solved whole in
@@ -127,11 +127,11 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
     contacts_.clear();
     found.resize(found_before);
     indexLastContacts(shapes, islands.wakeCount());
-    meetPairs(shapes, broad_phase, islands, world, found);
+    meetPairs(shapes, broad_phase, islands, events, world, found);
 }
 
-bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
-                              std::vector<Collision>& found) {
+bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+                              const WorldSettings& world, std::vector<Collision>& found) {
     persisted_ = 0;
     bool woke = false;
     broad_phase.startStep(shapes, 1);
@@ -145,6 +145,7 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
             broad_phase.noteResting();
             woke = true;
         }
+        events.touching(a, b, *info);
         found.push_back({i, j, *info});
         ContactManifold manifold = contactManifold(a, b, *info);
         Contact contact{.a = i,

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "broad_phase.h"
+#include "contact_events.h"
 #include "collision_info.h"
 #include "contact_manifold.h"
 #include "islands.h"
@@ -74,9 +75,10 @@ public:
     // approaches, none pulls, and friction stays within its cone. Each colliding pair's
     // narrow-phase answer goes to `found`, in the order met.
     // Every touching pair is reported to `islands`, which wakes a sleeping shape that an
-    // awake one reaches; a pair of two sleeping or static shapes is not tested.
-    void step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
-              std::vector<Collision>& found);
+    // awake one reaches, and to `events` (5.7's contact_events.h); a pair of two
+    // sleeping or static shapes is not tested.
+    void step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+              const WorldSettings& world, std::vector<Collision>& found);
 
     // How many contact points the last step solved, and how many of them were found
     // again from the step before (and so warm started, when that is on).
@@ -115,11 +117,11 @@ public:
     const std::vector<Contact>& contacts() const { return contacts_; }
 
 private:
-    void findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
-                      std::vector<Collision>& found);
+    void findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+                      const WorldSettings& world, std::vector<Collision>& found);
     // The pass over the pairs; returns whether it woke an island.
-    bool meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
-                   std::vector<Collision>& found);
+    bool meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+                   const WorldSettings& world, std::vector<Collision>& found);
     // Sorts the last step's contacts, and the sleeping ones, into those the pass may meet
     // again (last_, indexed) and those of shapes that both rest (asleep_). `wakes`: the
     // islands' count of wakes, which says whether a sleeping contact can have woken.

@@ -74,9 +74,13 @@ void Core::toggleSetting(bool WorldSettings::*flag) {
     changeSettings(changed);
 }
 
-// The shapes removed wake whatever they held up (islands.h).
+// The shapes removed wake whatever they held up (islands.h), and end every pair they
+// touched (contact_events.h).
 void Core::keepFirstObjects(std::size_t count) {
-    for (std::size_t i = count; i < all_objects_.size(); ++i) wakeIslandOf(i);
+    for (std::size_t i = count; i < all_objects_.size(); ++i) {
+        wakeIslandOf(i);
+        leaveContacts(i);
+    }
     if (count < all_objects_.size()) all_objects_.resize(count);
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
@@ -100,6 +104,7 @@ void Core::runGameLoop() {
 // are shorter, so shapes overlap less before they are found and a fast one moves less
 // between two looks. The loop's timer still counts whole steps of dt.
 void Core::update() {
+    physics_.events().startStep(step_count_ + 1);
     WorldSettings sub_step = settings_;
     sub_step.dt = settings_.dt / settings_.substeps;
     for (int k = 0; k < settings_.substeps; ++k) {
@@ -115,9 +120,14 @@ void Core::update() {
         }
         physics_.islands().endStep(all_objects_, sub_step);
         if (settings_.remove_out_of_bounds) removeOutOfBounds();
+        physics_.events().endStep(all_objects_, kHitSpeed);
     }
     ++step_count_;
     if (step_listener_) step_listener_();
+}
+
+void Core::leaveContacts(std::size_t index) {
+    if (index < all_objects_.size()) physics_.events().shapeLeaves(all_objects_[index]->id());
 }
 
 bool Core::isOutOfBounds(const RigidShape& shape) const {

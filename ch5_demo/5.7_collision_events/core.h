@@ -101,7 +101,8 @@ public:
     // the islands' sleep (islands.h); with
     // remove_out_of_bounds, every shape whose centre has left the canvas in this step
     // is then removed. With settings().substeps k > 1 all of that runs k times with
-    // dt / k. runGameLoop runs it as often as the timer says; tests may run it directly.
+    // dt / k. Last, the step's collision events are told (contact_events.h). runGameLoop
+    // runs it as often as the timer says; tests may run it directly.
     void update();
     // How many fixed steps have run (sub-steps not counted), and a function to call
     // after each one (the state dump of --dump listens here).
@@ -111,6 +112,14 @@ public:
     const FixedStepTimer& timer() const { return timer_; }
     const Physics& physics() const { return physics_; }
     const ContinuousCollision& continuous() const { return continuous_; }
+
+    // 5.7's collision events (contact_events.h): kept only while someone reads them (the
+    // game logic, --events, the overlay). The events of the last step, read after it.
+    void keepEvents(bool keep) { physics_.events().keep(keep); }
+    const ContactEvents& events() const { return physics_.events(); }
+    // A key moved, turned or made static the shape at `index`: each pair it touched
+    // ends (if it still touches, the next step begins it anew).
+    void leaveContacts(std::size_t index);
 
 private:
     void toggleSetting(bool WorldSettings::*flag);

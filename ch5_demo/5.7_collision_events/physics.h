@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "broad_phase.h"
+#include "contact_events.h"
 #include "contact_solver.h"
 #include "islands.h"
 #include "narrow_phase.h"
@@ -90,6 +91,10 @@ public:
     const BroadPhase& broadPhase() const { return broad_phase_; }
     const ContactSolver& contactSolver() const { return contact_solver_; }
     Islands& islands() { return islands_; }
+    // 5.7's collision events: each pair the step finds touching is reported to them, in
+    // either solver, before anything resolves it (contact_events.h).
+    ContactEvents& events() { return events_; }
+    const ContactEvents& events() const { return events_; }
 
 private:
     // The overlay's record of `pair`, or nullptr while it keeps none.
@@ -101,6 +106,7 @@ private:
     BroadPhase broad_phase_;
     ContactSolver contact_solver_;
     Islands islands_;
+    ContactEvents events_;
 };
 
 }  // namespace engine

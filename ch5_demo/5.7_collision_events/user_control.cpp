@@ -67,6 +67,7 @@ void UserControl::selectedObjectKeys(browser::Key key, RigidShape& selected) {
     // for something else to wake it; and its island with it, since what it holds up, or
     // lies on, may now be pushed.
     if (changesSelected(key)) core_.wakeIslandOf(core_.selectedIndex());
+    const bool was_moving = !selected.isStatic();
     if (key == Key::W) selected.move({0, -kMoveStep});
     if (key == Key::S) selected.move({0, +kMoveStep});
     if (key == Key::A) selected.move({-kMoveStep, 0});
@@ -89,6 +90,14 @@ void UserControl::selectedObjectKeys(browser::Key key, RigidShape& selected) {
     if (key == Key::V) selected.setFriction(selected.friction() + kSurfaceStep);
     if (key == Key::B) selected.setRestitution(std::max(0.0, selected.restitution() - kSurfaceStep));
     if (key == Key::N) selected.setRestitution(std::min(1.0, selected.restitution() + kSurfaceStep));
+
+    // A shape put somewhere by hand, or made static, leaves its contacts (5.7's events):
+    // its pairs end now, and whatever it touches next step begins anew.
+    const bool teleported =
+        key == Key::W || key == Key::A || key == Key::S || key == Key::D || key == Key::Q || key == Key::E;
+    if (teleported || (key == Key::Z && selected.isStatic() && was_moving)) {
+        core_.leaveContacts(core_.selectedIndex());
+    }
 
     if (key == Key::F) spawnRectangle(selected.center());
     if (key == Key::G) spawnCircle(selected.center());
