@@ -183,6 +183,13 @@ function(stage_engine_and_program target dir name)
   if(engine_sources)
     add_library(${target}_engine STATIC ${ARGN} ${engine_sources})
     target_include_directories(${target}_engine PUBLIC ${dir})
+    # One translation unit (sources_together, the top-level CMakeLists.txt), but for the
+    # files whose anonymous namespace names what another file's does with another value:
+    # user_control.cpp's kSideMin (my_game.cpp's), contact_overlay.cpp's kNormalColor
+    # (overlay.cpp's). They are compiled alone.
+    sources_together(${target}_engine)
+    set_source_files_properties(${dir}/user_control.cpp ${dir}/contact_overlay.cpp
+      PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
     target_link_libraries(${target}_engine PUBLIC browser)
   else()
     add_library(${target}_engine INTERFACE)
