@@ -71,15 +71,11 @@ function(add_workbench_stage stage folder)
     get_property(${key} GLOBAL PROPERTY PHYSICS_STAGE_${stage}_${key})
   endforeach()
   set(program ${id}_${PROGRAM})
+  # The reader's files each compiled alone, not as our engines are (one unit,
+  # cmake/Together.cmake): a name two of their files keep in an anonymous namespace must
+  # not become an error of the build's.
+  set(PHYSICS_UNITY OFF)
   stage_engine_and_program(${id} ${folder} ${PROGRAM} EXCLUDE_FROM_ALL)
-  # The reader's files each compiled alone, not as our engines are (one unit): a name two
-  # of their files keep in an anonymous namespace must not become an error of the build's.
-  if(TARGET ${id}_engine)
-    get_target_property(type ${id}_engine TYPE)
-    if(type STREQUAL "STATIC_LIBRARY")
-      set_target_properties(${id}_engine PROPERTIES UNITY_BUILD OFF)
-    endif()
-  endif()
   # compare_png too: the reader's loop compares their pictures with ours.
   add_custom_target(${id} DEPENDS ${program} compare_png)
 
