@@ -3,6 +3,7 @@
 // (stage_engine.h) or Box2D as the reference (box2d_world.h). The measures only ever
 // see a Snapshot, so one measure serves every engine.
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -56,6 +57,10 @@ public:
         double passes = 0.0;
     };
     virtual std::optional<PairCounts> pair_counts() const { return std::nullopt; }
+
+    // How many of the moving bodies are awake, where the engine sleeps (Box2D with its
+    // sleeping on, for 5.5's studies); nothing where it does not say.
+    virtual std::optional<std::size_t> awake_count() const { return std::nullopt; }
 
 protected:
     virtual void advance(long steps) = 0;

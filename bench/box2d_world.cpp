@@ -66,6 +66,12 @@ public:
         return bodies;
     }
 
+    std::optional<std::size_t> awake_count() const override {
+        std::size_t awake = 0;
+        for (const b2Body* body : bodies_) awake += body->GetType() == b2_dynamicBody && body->IsAwake() ? 1 : 0;
+        return awake;
+    }
+
 protected:
     void advance(long steps) override {
         for (long i = 0; i < steps; ++i) world_.Step(dt_, kBox2dVelocityIterations, kBox2dPositionIterations);

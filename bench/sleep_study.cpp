@@ -97,10 +97,8 @@ Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, 
     engine::WorldSettings world = scene.world;
     world.solver = solver;
     world.sleep = sleep;
-    // The README's sleep speed scales with gravity: 3 px/s under the demo's 20 px/s^2
-    // keeps a shape at the top of its arc under it for 2 * 3 / 20 = 0.3 s, less than the
-    // time to sleep; under the rain's 100 px/s^2 the same 0.3 s allows 15 px/s.
-    world.sleep_speed = engine::kSleepSpeed * world.gravity.length() / engine::kGravity.length();
+    // The engine's own sleep speed, which follows gravity: 15 px/s under the rain's
+    // 100 px/s^2 (world_settings.h).
     browser::Window window(world.dt * 1000.0,
                            browser::Document{browser::Canvas(static_cast<int>(std::ceil(world.width)),
                                                              static_cast<int>(std::ceil(world.height)))});
@@ -118,7 +116,7 @@ Run runStage(const engine::Scene& scene, engine::SolverKind solver, bool sleep, 
             core.update();
             step_seconds.push_back(bench::thread_cpu_seconds() - start);
             if (!sleep) continue;
-            countRestarts(core, world.sleep_speed, figures.speed_restarts, figures.drift_restarts);
+            countRestarts(core, engine::sleepSpeed(world), figures.speed_restarts, figures.drift_restarts);
             // Held is only kept while sleep is on; a run with sleep off has no landing time.
             if (run.landed_s < 0 && allHeld(core)) run.landed_s = static_cast<double>(core.stepCount()) * world.dt;
             if (run.landed_s >= 0 && !allHeld(core)) run.landed_s = -1.0;

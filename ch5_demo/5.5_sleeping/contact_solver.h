@@ -118,6 +118,13 @@ public:
 private:
     void findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
                       std::vector<Collision>& found);
+    // The pass over the pairs; returns whether it woke an island.
+    bool meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
+                   std::vector<Collision>& found);
+    // Sorts the last step's contacts, and the sleeping ones, into those the pass may meet
+    // again (last_, indexed) and those of shapes that both rest (asleep_). `wakes`: the
+    // islands' count of wakes, which says whether a sleeping contact can have woken.
+    void indexLastContacts(ShapeList shapes, std::uint64_t wakes);
     void prepare(ShapeList shapes, const WorldSettings& world);
     void warmStart();
     void solveVelocities(int iterations, bool with_removal);
@@ -135,6 +142,14 @@ private:
     using PairKey = std::pair<const RigidShape*, const RigidShape*>;
     std::vector<Contact> last_;
     std::vector<std::pair<PairKey, std::size_t>> last_index_;
+    // The contacts of sleeping islands, as they fell asleep. The pass no longer meets
+    // their pairs, but Box2D's contacts sleep with their bodies, and so do these: when
+    // the island wakes, its contacts start from the totals that held it at rest, not
+    // from 0. A pile of ten woken with no totals would sag for a step under its own
+    // weight, as the iterations built them up again from the top, and creep for a
+    // second before it rested again.
+    std::vector<Contact> asleep_;
+    std::uint64_t asleep_checked_at_ = 0;  // the islands' wake count when last sorted
     std::size_t persisted_ = 0;
 };
 

@@ -56,6 +56,10 @@ void drawGrid(browser::Canvas& canvas, const Core& core, std::vector<browser::Le
         for (std::size_t k = grid.rowBegin(i); k < grid.rowEnd(i); ++k) {
             const std::size_t j = grid.partner(k);
             if (grid.isOversize(i) || grid.isOversize(j)) continue;
+            // Passed over asleep (broad_phase.h): a sleeping shape and a resting one.
+            const RigidShape& a = core.object(i);
+            const RigidShape& b = core.object(j);
+            if (a.isResting() && b.isResting() && (a.sleep().asleep || b.sleep().asleep)) continue;
             draw::line(canvas, core.object(i).center(), core.object(j).center(), kCandidateColor);
         }
     }

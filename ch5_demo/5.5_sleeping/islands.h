@@ -58,16 +58,20 @@ public:
     void endStep(ShapeList shapes, const WorldSettings& world);
 
     // The shape at `index` and its island; a static shape wakes everything. Called for
-    // a shape about to be removed too: what it held up, or lay on, wakes.
-    void wakeIslandOf(ShapeList shapes, std::size_t index);
+    // a shape about to be removed too: what it held up, or lay on, wakes. Their rest
+    // starts again, unless `timer` says it goes on (RigidShape::wake).
+    void wakeIslandOf(ShapeList shapes, std::size_t index, RestTimer timer = RestTimer::starts_again);
     void wakeAll(ShapeList shapes);
 
     // The shapes that can move and are awake.
     static std::size_t awakeCount(ShapeList shapes);
+    // How many times anything was woken so far: what was asleep and is no longer can
+    // only have changed when this has (the solver's sleeping contacts, contact_solver.h).
+    std::uint64_t wakeCount() const { return wake_count_; }
 
 private:
     std::size_t root(std::size_t i);
-    void wakeLabel(ShapeList shapes, std::uint64_t island);
+    void wakeLabel(ShapeList shapes, std::uint64_t island, RestTimer timer);
 
     std::vector<Vec2> step_start_center_;  // each shape as the step found it
     std::vector<double> step_start_angle_;
@@ -77,6 +81,7 @@ private:
     std::vector<double> island_rested_;        // s, per root: the shortest rest in the island
     std::vector<std::uint64_t> island_label_;  // per root: the island's name this step
     std::uint64_t next_label_ = 1;             // 0 is a new shape's, before its first step
+    std::uint64_t wake_count_ = 0;
 };
 
 }  // namespace engine

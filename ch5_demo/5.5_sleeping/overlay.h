@@ -34,6 +34,10 @@
 //
 // 5.4's contact solver adds its contacts (contact_overlay.h): reference and incident
 // faces, the clipped points, and the totals each point ended the step with.
+//
+// This stage adds its islands (islands_overlay.h): each island in its own colour, each
+// shape's rest timer as a ring that fills, the sleeping shapes; and the grid's layer
+// leaves out the pairs the broad phase passes over asleep.
 
 #include "browser.h"
 #include "core.h"

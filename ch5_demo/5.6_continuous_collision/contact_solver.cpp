@@ -73,6 +73,51 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& isl
     }
 }
 
+namespace {
+// Whether the contact still names the shapes at its places in the list: removing a
+// shape moves the ones after it up the list.
+bool stillInPlace(const ContactSolver::Contact& contact, ShapeList shapes) {
+    return contact.a < shapes.size() && contact.b < shapes.size() && shapes[contact.a].get() == contact.shape_a &&
+           shapes[contact.b].get() == contact.shape_b;
+}
+bool bothResting(const ContactSolver::Contact& contact, ShapeList shapes) {
+    return shapes[contact.a]->isResting() && shapes[contact.b]->isResting();
+}
+// The index's order. Pointers compared by std::less: a total order, whatever the
+// addresses.
+template <class Entry>
+bool byPair(const Entry& x, const Entry& y) {
+    return std::less<const RigidShape*>{}(x.first.first, y.first.first) ||
+           (x.first.first == y.first.first && std::less<const RigidShape*>{}(x.first.second, y.first.second));
+}
+}  // namespace
+
+void ContactSolver::indexLastContacts(ShapeList shapes, std::uint64_t wakes) {
+    // A contact of an island that woke comes back, to be met again. Only a wake can
+    // change that, so while nothing wakes the sleeping contacts are not looked at: a
+    // pile asleep costs nothing here.
+    if (wakes != asleep_checked_at_) {
+        asleep_checked_at_ = wakes;
+        std::erase_if(asleep_, [&](Contact& contact) {
+            if (!stillInPlace(contact, shapes)) return true;
+            if (bothResting(contact, shapes)) return false;
+            last_.push_back(std::move(contact));
+            return true;
+        });
+    }
+    // A contact whose shapes both rest now (they fell asleep at the end of the last
+    // step) goes to sleep with them: the pass will pass its pair over.
+    std::erase_if(last_, [&](Contact& contact) {
+        if (!stillInPlace(contact, shapes) || !bothResting(contact, shapes)) return false;
+        asleep_.push_back(std::move(contact));
+        return true;
+    });
+
+    last_index_.clear();
+    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].shape_a, last_[k].shape_b}, k});
+    std::sort(last_index_.begin(), last_index_.end(), byPair<std::pair<PairKey, std::size_t>>);
+}
+
 // One look at every pair the broad phase hands out (nothing moves while it looks), and
 // for each pair that overlaps its contact points, each matched by key with the points
 // of the same pair in the last step.
@@ -80,16 +125,23 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
                                  const WorldSettings& world, std::vector<Collision>& found) {
     last_.swap(contacts_);
     contacts_.clear();
-    last_index_.clear();
-    for (std::size_t k = 0; k < last_.size(); ++k) last_index_.push_back({{last_[k].shape_a, last_[k].shape_b}, k});
-    // Pointers compared by std::less: a total order, whatever the addresses.
-    const auto by_pair = [](const auto& x, const auto& y) {
-        return std::less<const RigidShape*>{}(x.first.first, y.first.first) ||
-               (x.first.first == y.first.first && std::less<const RigidShape*>{}(x.first.second, y.first.second));
-    };
-    std::sort(last_index_.begin(), last_index_.end(), by_pair);
-    persisted_ = 0;
+    indexLastContacts(shapes, islands.wakeCount());
+    const std::size_t found_before = found.size();
+    if (!meetPairs(shapes, broad_phase, islands, world, found)) return;
+    // An awake shape reached a sleeping island in the middle of the pass, and woke it:
+    // the island's own pairs that the pass met before that were passed over as asleep.
+    // Nothing has moved yet, so the pass runs again, and the island is solved whole in
+    // the very step it wakes, as Box2D solves it, with the contacts it slept with.
+    contacts_.clear();
+    found.resize(found_before);
+    indexLastContacts(shapes, islands.wakeCount());
+    meetPairs(shapes, broad_phase, islands, world, found);
+}
 
+bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, const WorldSettings& world,
+                              std::vector<Collision>& found) {
+    persisted_ = 0;
+    bool woke = false;
     broad_phase.startStep(shapes, 1);
     broad_phase.pass([&](std::size_t i, std::size_t j) {
         const RigidShape& a = *shapes[i];
@@ -97,7 +149,10 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
         if (a.isResting() && b.isResting()) return false;
         const std::optional<CollisionInfo> info = narrowPhase(a, b);
         if (!info) return false;
-        if (islands.touching(shapes, i, j, info->depth())) broad_phase.noteResting();
+        if (islands.touching(shapes, i, j, info->depth())) {
+            broad_phase.noteResting();
+            woke = true;
+        }
         found.push_back({i, j, *info});
         ContactManifold manifold = contactManifold(a, b, *info);
         Contact contact{.a = i,
@@ -110,7 +165,8 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
                         .restitution = std::min(a.restitution(), b.restitution()),
                         .points = {}};
         const std::pair<PairKey, std::size_t> wanted{{&a, &b}, 0};
-        const auto last = std::lower_bound(last_index_.begin(), last_index_.end(), wanted, by_pair);
+        const auto last =
+            std::lower_bound(last_index_.begin(), last_index_.end(), wanted, byPair<std::pair<PairKey, std::size_t>>);
         const bool met_before = last != last_index_.end() && last->first == wanted.first;
         for (const ContactPoint& point : manifold.points) {
             Point solved{.contact = point};
@@ -127,6 +183,7 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
         contacts_.push_back(std::move(contact));
         return false;  // nothing has moved yet
     });
+    return woke;
 }
 
 // What stays the same over the step's iterations: the arms, the effective masses and

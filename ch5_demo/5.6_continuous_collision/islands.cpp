@@ -32,9 +32,12 @@ double driftSinceRest(const RigidShape& shape) {
            std::abs(shape.angle() - state.rest_angle) * shape.boundRadius();
 }
 
-// A steady creep at a tenth of the sleep speed, over the time to sleep: 0.15 px with
-// the defaults, where a box sliding from rest at 1.2 px/s^2 gets in half a second.
-double driftAllowed(const WorldSettings& world) { return world.sleep_speed * world.time_to_sleep / 10.0; }
+// A steady creep at 0.3 px/s over the time to sleep: 0.15 px with the defaults, where a
+// box sliding from rest at 1.2 px/s^2 gets in half a second. In pixels, not in
+// proportion to the sleep speed: a pile that jitters more under a stronger gravity
+// may still not creep farther (the README's figures: at 1000 px/s^2, a drift allowed
+// in proportion let a pile fall asleep while it still slumped 5 px).
+double driftAllowed(const WorldSettings& world) { return kCreepSpeed * world.time_to_sleep; }
 }  // namespace
 
 void Islands::startStep(ShapeList shapes) {
@@ -61,11 +64,16 @@ bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double de
     // one of them to another.
     if (!shapes[i]->isStatic() && !shapes[j]->isStatic()) parent_[root(i)] = root(j);
     // An awake shape has reached a sleeping one: the sleeper's island must take part in
-    // this very step, or the awake shape would sink into it as into a static wall.
+    // this very step, or the awake shape would sink into it as into a static wall. Its
+    // rest goes on: nothing has moved it yet. Were it to start again, a shape at the edge
+    // of a pile whose touch comes and goes (apart for a step, so that it fell asleep on
+    // its own, then touching again) would make the whole pile wait another
+    // time_to_sleep, again and again (the README's figures). If the touch does move the
+    // island, its sleep speed starts its rest again; if not, it was at rest all along.
     bool woke = false;
     for (const std::size_t shape : {i, j}) {
         if (!shapes[shape]->sleep().asleep) continue;
-        wakeIslandOf(shapes, shape);
+        wakeIslandOf(shapes, shape, RestTimer::goes_on);
         woke = true;
     }
     return woke;
@@ -89,7 +97,7 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
         // every other step: a contact in this step or the last one holds it.
         const bool held = held_[i] || shape.sleep().held;
         const double speed = sleepSpeed(shape, step_start_center_[i], step_start_angle_[i], deepest_[i], world);
-        const bool resting = world.movement && (held || !falling_without_support) && speed < world.sleep_speed &&
+        const bool resting = world.movement && (held || !falling_without_support) && speed < sleepSpeed(world) &&
                              driftSinceRest(shape) <= driftAllowed(world);
         shape.rest(resting, held_[i], speed, world.dt, world.time_to_sleep);
         double& rested = island_rested_[root(i)];
@@ -102,25 +110,30 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
         const std::size_t island = root(i);
         if (island_label_[island] == 0) island_label_[island] = next_label_++;
         shape.joinIsland(island_label_[island]);
-        if (island_rested_[island] >= world.time_to_sleep) shape.fallAsleep(island_label_[island]);
+        // Every shape of the island must rest in this very step: with time_to_sleep 0,
+        // "rested at least 0 s" would also hold for a shape that did not rest at all.
+        const double rested = island_rested_[island];
+        if (rested > 0.0 && rested >= world.time_to_sleep) shape.fallAsleep(island_label_[island]);
     }
 }
 
-void Islands::wakeLabel(ShapeList shapes, std::uint64_t island) {
+void Islands::wakeLabel(ShapeList shapes, std::uint64_t island, RestTimer timer) {
     for (const auto& shape : shapes) {
-        if (shape->sleep().island == island && !shape->isStatic()) shape->wake();
+        if (shape->sleep().island == island && !shape->isStatic()) shape->wake(timer);
     }
 }
 
-void Islands::wakeIslandOf(ShapeList shapes, std::size_t index) {
+void Islands::wakeIslandOf(ShapeList shapes, std::size_t index, RestTimer timer) {
     if (index >= shapes.size()) return;
+    ++wake_count_;
     RigidShape& shape = *shapes[index];
     if (shape.isStatic()) return wakeAll(shapes);
-    wakeLabel(shapes, shape.sleep().island);
-    shape.wake();
+    wakeLabel(shapes, shape.sleep().island, timer);
+    shape.wake(timer);
 }
 
 void Islands::wakeAll(ShapeList shapes) {
+    ++wake_count_;
     for (const auto& shape : shapes) shape->wake();
 }
 

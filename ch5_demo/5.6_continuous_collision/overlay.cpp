@@ -6,6 +6,7 @@
 
 #include "contact_overlay.h"
 #include "grid_overlay.h"
+#include "islands_overlay.h"
 #include "number_format.h"
 #include "overlay_draw.h"
 
@@ -172,6 +173,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     drawGrid(sheet.canvas, core, legend);
+    drawIslands(sheet.canvas, sheet.labels, core, legend);
     drawCollisionInfo(sheet, core);
     drawMotion(sheet, core);
     drawCorrection(sheet, core);

@@ -35,6 +35,10 @@
 // 5.4's contact solver adds its contacts (contact_overlay.h): reference and incident
 // faces, the clipped points, and the totals each point ended the step with.
 //
+// 5.5's sleeping adds its islands (islands_overlay.h): each island in its own colour,
+// each shape's rest timer as a ring that fills, the sleeping shapes; and the grid's
+// layer leaves out the pairs the broad phase passes over asleep.
+//
 // This stage's continuous collision adds the sweeps (continuous.h): each fast shape's
 // path in the last step, and where the sweep stopped it.
 

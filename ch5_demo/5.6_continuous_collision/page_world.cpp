@@ -48,10 +48,11 @@ browser::WorldCost worldCost(const Core& core, const browser::KeyScript& keys) {
     // solver finds the pairs once, then goes over every contact once a velocity
     // iteration and once a position iteration: at worst every pair is a contact, so a
     // pass over the contacts counts as a pass over the pairs. The islands of sleeping
-    // walk the contacts once more.
+    // walk the contacts once more, and with the sequential impulse solver a wake in the
+    // middle of its pass over the pairs runs that pass again (contact_solver.h).
     double passes =
         book ? std::max(world.relaxation_iterations, 1) : 1.0 + world.velocity_iterations + world.position_iterations;
-    if (world.sleep) passes += 1.0;
+    if (world.sleep) passes += book ? 1.0 : 2.0;
     // Continuous collision sweeps every fast shape against the static shapes, and a
     // fast bullet against every shape: at worst every shape is fast.
     const double swept_pairs = world.continuous ? bullets * shapes + (shapes - bullets) * statics : 0.0;

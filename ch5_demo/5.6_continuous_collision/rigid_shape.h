@@ -39,6 +39,9 @@ using lib::Vec2;
 
 enum class ShapeType { Rectangle, Circle };
 
+// What a wake does to a shape's rest timer (RigidShape::wake).
+enum class RestTimer { starts_again, goes_on };
+
 // Where a shape stands with sleeping (islands.h): asleep or not, how long it has rested,
 // and which island it last belonged to.
 struct SleepState {
@@ -112,9 +115,13 @@ public:
     const SleepState& sleep() const { return sleep_; }
     bool isResting() const { return isStatic() || sleep_.asleep; }
     void fallAsleep(std::uint64_t island);
-    void wake() {
+    // Wakes the shape. Its rest starts again from 0 when something changed it or its
+    // world (a key, a removal, a setting); it goes on where it stopped when an awake
+    // shape only reached its island, which has not moved since it fell asleep
+    // (islands.h).
+    void wake(RestTimer timer = RestTimer::starts_again) {
         sleep_.asleep = false;
-        sleep_.rested_s = 0.0;
+        if (timer == RestTimer::starts_again) sleep_.rested_s = 0.0;
     }
     // Adds dt to the rest timer while `resting`, and starts it again from 0 when not;
     // `held`: the shape touched something in this step. Where the shape stands is noted

@@ -12,6 +12,8 @@
 // continuous is what the book does, so a scene that leaves them out and turns both off
 // runs as 5.2.
 
+#include <algorithm>
+
 #include "vec2.h"
 
 namespace engine {
@@ -58,12 +60,18 @@ inline constexpr double kRestitutionThreshold = 30.0;  // px/s
 inline constexpr double kPositionRate = 0.2;           // share of the overlap past the slop, per step
 inline constexpr double kSlop = 0.15;                  // px of overlap left alone
 
-// Sleeping (islands.h; README.md derives both numbers): a shape rests while its sleep
-// speed stays under 3 px/s, and its island falls asleep when all of it has rested for
-// half a second. Under the demo's gravity a shape at the top of its arc is that slow
-// for 2 * 3 / 20 = 0.3 s only.
-inline constexpr double kSleepSpeed = 3.0;   // px/s
-inline constexpr double kTimeToSleep = 0.5;  // s
+// Sleeping (islands.h; README.md derives every number). A shape rests while its sleep
+// speed stays under the world's sleep speed: 3 px/s (the scene's sleep_speed), or the
+// speed gravity gives in 0.15 s where that is more (15 px/s under 100 px/s^2). A shape
+// at the top of its arc is then that slow for 2 * 0.15 = 0.3 s at most, less than the
+// time to sleep, and the jitter of a resting pile, which grows with gravity, stays
+// under it. Whatever its sleep speed, a resting shape does not creep: over the time to
+// sleep it goes no farther than at 0.3 px/s (Box2D's 1 cm/s at the bench's 30 px to the
+// metre). An island falls asleep when all of it has rested for half a second.
+inline constexpr double kSleepSpeed = 3.0;       // px/s, the least
+inline constexpr double kSleepSpeedTime = 0.15;  // s
+inline constexpr double kCreepSpeed = 0.3;       // px/s
+inline constexpr double kTimeToSleep = 0.5;      // s
 
 struct WorldSettings {
     double width = 800.0;   // px, the canvas
@@ -102,7 +110,7 @@ struct WorldSettings {
     // 5.5's sleeping, on unless a scene turns it off; with it off every scene runs
     // as in 5.4, bit for bit. The slop above is also the overlap the sleep rule forgives.
     bool sleep = true;
-    double sleep_speed = kSleepSpeed;     // px/s
+    double sleep_speed = kSleepSpeed;     // px/s, the least (sleepSpeed, below)
     double time_to_sleep = kTimeToSleep;  // s
     // This stage's continuous collision (continuous.h): a shape that moves far in a step
     // against its own size is swept to where it first touches, so it cannot pass
@@ -112,6 +120,12 @@ struct WorldSettings {
 
     friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };
+
+// The sleep speed of `world`: its sleep_speed, or what its gravity gives in 0.15 s
+// where that is more.
+inline double sleepSpeed(const WorldSettings& world) {
+    return std::max(world.sleep_speed, kSleepSpeedTime * world.gravity.length());
+}
 
 // The world of the book's cool demo, unless a scene file says otherwise.
 inline constexpr WorldSettings kBookWorld{};
