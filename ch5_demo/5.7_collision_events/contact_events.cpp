@@ -7,7 +7,7 @@ namespace engine {
 namespace {
 
 // The velocity of the shape's point at `point`: its centre's plus the spin's w x r.
-Vec2 velocityAt(const RigidShape& shape, Vec2 point) {
+Vec2 surfaceVelocity(const RigidShape& shape, Vec2 point) {
     const Vec2 arm = point - shape.center();
     const double w = shape.angularVelocity();
     return shape.velocity() + Vec2{-w * arm.y, w * arm.x};
@@ -52,7 +52,7 @@ void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const Col
     // The shapes come in list order, which is id order: the normal already points from
     // the smaller id to the larger.
     const Vec2 point = (info.start() + info.end()) * 0.5;
-    const double approach = -(velocityAt(b, point) - velocityAt(a, point)).dot(info.normal());
+    const double approach = -(surfaceVelocity(b, point) - surfaceVelocity(a, point)).dot(info.normal());
     found_.push_back({{a.id(), b.id()}, point, info.normal(), approach});
 }
 
