@@ -84,8 +84,10 @@ TEST_CASE("s5_7: a ball dropped from h begins at the step the closed form says, 
             long n = 0;
             while (g * dt * dt * static_cast<double>(n * (n + 1)) / 2 <= gap) ++n;
             const std::vector<ContactEvent> events = stepUntil(page, EventKind::begin, 2000);
+            INFO("the ball's first begin, at step " << page.core.stepCount() << "; the closed form's: " << n + 1);
             REQUIRE(page.core.stepCount() == n + 1);
             const std::vector<ContactEvent> hits = ofKind(events, EventKind::hit);
+            INFO("hit events in the begin's step: " << hits.size() << ", one expected");
             REQUIRE(hits.size() == 1);
             CHECK(hits[0].step == n + 1);
             CHECK(hits[0].id_a == drop.floor.id());
@@ -108,14 +110,19 @@ TEST_CASE("s5_7: a gentle touch begins but is no hit; a pair that parts ends, on
         page.core.keepEvents(true);
         Drop drop(page, 1.0);  // 1 px: it meets the floor at about sqrt(2 g) = 6.3 px/s
         const std::vector<ContactEvent> events = stepUntil(page, EventKind::begin, 100);
+        INFO("a 1 px drop: begins " << ofKind(events, EventKind::begin).size() << " (1 expected), hits "
+                                    << ofKind(events, EventKind::hit).size() << " (none: 6.3 px/s < kHitSpeed)");
         REQUIRE(ofKind(events, EventKind::begin).size() == 1);
         CHECK(ofKind(events, EventKind::hit).empty());
         // Its small bounces over, at rest on the floor it touches, step after step, with
         // no event.
         page.steps(120);
+        INFO("pairs touching with the ball at rest on the floor: " << page.core.events().touchingCount());
         REQUIRE(page.core.events().touchingCount() == 1);
         for (int i = 0; i < 60; ++i) {
             page.core.update();
+            INFO("events of a resting pair at step " << page.core.stepCount() << ": "
+                                                     << page.core.events().events().size() << ", none expected");
             REQUIRE(page.core.events().events().empty());
         }
         // Thrown up hard, it leaves the floor: one end.
@@ -123,9 +130,11 @@ TEST_CASE("s5_7: a gentle touch begins but is no hit; a pair that parts ends, on
         // do not, and the last of them ends the pair.
         drop.ball.setVelocity({0, -300});
         page.steps(engine::kMissedSteps);
+        INFO("events before the pair has been missed kMissedSteps times: " << page.core.events().events().size());
         REQUIRE(page.core.events().events().empty());
         page.core.update();
         const std::vector<ContactEvent> ends = ofKind(page.core.events().events(), EventKind::end);
+        INFO("end events once the thrown ball is gone kMissedSteps steps: " << ends.size() << ", one expected");
         REQUIRE(ends.size() == 1);
         CHECK(ends[0].id_b == drop.ball.id());
         CHECK(page.core.events().touchingCount() == 0);
@@ -140,6 +149,7 @@ struct Resting {
         page.core.keepEvents(true);
         REQUIRE_FALSE(stepUntil(page, EventKind::begin, 100).empty());
         page.steps(120);  // 2 s: its small bounces are over, it rests on the floor
+        INFO("pairs touching with the ball at rest on the floor: " << page.core.events().touchingCount());
         REQUIRE(page.core.events().touchingCount() == 1);
     }
     Drop drop;
@@ -148,6 +158,8 @@ struct Resting {
 // The one end event of the floor and the ball (by their ids: the ball may be gone).
 void requireOneEnd(const std::vector<ContactEvent>& events, engine::BodyId floor, engine::BodyId ball) {
     const std::vector<ContactEvent> ends = ofKind(events, EventKind::end);
+    INFO("end events of the floor (id " << floor << ") and the ball (id " << ball << "): " << ends.size()
+                                        << ", one expected");
     REQUIRE(ends.size() == 1);
     CHECK(ends[0].id_a == floor);
     CHECK(ends[0].id_b == ball);
@@ -256,6 +268,7 @@ TEST_CASE("s5_7: a pile that falls asleep touching sends no end, and its waking 
             page.core.update();
             count();
         }
+        INFO("end events while the boxes sleep: " << ends - ends_asleep << ", none expected");
         CHECK(ends == ends_asleep);
         page.core.wakeAll();
         for (int i = 0; i < 10; ++i) {
@@ -263,6 +276,7 @@ TEST_CASE("s5_7: a pile that falls asleep touching sends no end, and its waking 
             count();
         }
         REQUIRE(page.core.awakeCount() > 0);
+        INFO("after waking: begins " << begins - begins_asleep << ", ends " << ends - ends_asleep << ", none expected");
         CHECK(begins == begins_asleep);
         CHECK(ends == ends_asleep);
         CHECK(page.core.events().touchingCount() == 3);
@@ -288,8 +302,11 @@ TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch
                     if (step == 450) page.press(browser::Key::R);
                     page.core.update();
                     for (const ContactEvent& event : page.core.events().events()) {
-                        REQUIRE(event.id_a < event.id_b);
                         int& state = open[{event.id_a, event.id_b}];
+                        INFO("step " << step << ": " << engine::kindName(event.kind) << " of the pair " << event.id_a
+                                     << "-" << event.id_b << " (touching before: " << state << "), speed "
+                                     << event.speed);
+                        REQUIRE(event.id_a < event.id_b);
                         if (event.kind == EventKind::begin) {
                             REQUIRE(state == 0);
                             state = 1;
@@ -303,6 +320,8 @@ TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch
                             REQUIRE(event.speed > engine::kHitSpeed);
                         }
                     }
+                    INFO("step " << step << ": begins " << begins << " - ends " << ends << " against "
+                                 << page.core.events().touchingCount() << " pairs touching");
                     REQUIRE(begins - ends == static_cast<long>(page.core.events().touchingCount()));
                 }
                 CHECK(begins > 20);  // the scene does touch: the test can fail
