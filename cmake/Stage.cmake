@@ -177,12 +177,17 @@ endfunction()
 # (main.cpp). Extra arguments go to add_library and add_executable (EXCLUDE_FROM_ALL).
 # A folder with nothing but main.cpp (a reader's 1.1 as it starts) has an engine of
 # headers only.
+set(PHYSICS_ENGINE_FILES_ALONE user_control.cpp contact_overlay.cpp)
 function(stage_engine_and_program target dir name)
   file(GLOB engine_sources CONFIGURE_DEPENDS ${dir}/*.cpp)
   list(REMOVE_ITEM engine_sources ${dir}/main.cpp)
   if(engine_sources)
     add_library(${target}_engine STATIC ${ARGN} ${engine_sources})
     target_include_directories(${target}_engine PUBLIC ${dir})
+    # One translation unit (cmake/Together.cmake), but for the files whose anonymous
+    # namespace names what another file's does with another value: user_control.cpp's
+    # kSideMin (my_game.cpp's), contact_overlay.cpp's kNormalColor (overlay.cpp's).
+    sources_together(${target}_engine ALONE ${PHYSICS_ENGINE_FILES_ALONE})
     target_link_libraries(${target}_engine PUBLIC browser)
   else()
     add_library(${target}_engine INTERFACE)

@@ -70,7 +70,7 @@ Image with_trail(const Image& picture, const Image& trail) {
 }
 
 Image side_by_side(const Image& left, std::string_view left_label, const Image& right, std::string_view right_label) {
-    const int band = kLabelHeight;
+    const int band = kHalfLabelHeight;
     const int gap = kGapWidth;
     Image joined(left.width + gap + right.width, band + std::max(left.height, right.height));
     joined.paste(left, 0, band);

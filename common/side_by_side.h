@@ -34,7 +34,7 @@ Image with_trail(const Image& picture, const Image& trail);
 // crop has room for a long one). The taller sets the height; the other is padded white.
 Image side_by_side(const Image& left, std::string_view left_label, const Image& right, std::string_view right_label);
 
-inline constexpr int kGapWidth = 12;     // px between the two halves
-inline constexpr int kLabelHeight = 24;  // px of the band above each half
+inline constexpr int kGapWidth = 12;         // px between the two halves
+inline constexpr int kHalfLabelHeight = 24;  // px of the band above each half
 
 }  // namespace browser

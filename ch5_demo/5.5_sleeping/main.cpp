@@ -12,9 +12,11 @@
 
 namespace {
 
-// The book's demo with every knob at its default, the book's engine: the pictures of
-// 5.1 and 5.2. A scene file turns the knobs (docs/scene_format.md). Two seconds in, a
-// box and a ball are thrown from the long slide; at five seconds H kicks every shape.
+// The book's demo with every knob at its default, the book's engine: the canvas of 5.1
+// to 5.4, pixel for pixel (nothing rests long enough to sleep), under a page one band
+// taller for the settings beyond the book. A scene file turns the knobs
+// (docs/scene_format.md). Two seconds in, a box and a ball are thrown from the long
+// slide; at five seconds H kicks every shape.
 // A table, an option or a key a line, which the layout would re-wrap:
 // clang-format off
 const browser::StageDefaults kStage{

@@ -12,9 +12,10 @@
 
 namespace {
 
-// The book's demo with every knob at its default, the book's engine: the pictures of
-// 5.1 and 5.2. A scene file turns the knobs (docs/scene_format.md). Two seconds in, a
-// box and a ball are thrown from the long slide; at five seconds H kicks every shape.
+// The book's demo with every knob at its default, the book's engine, continuous
+// collision on: 5.5's pictures until H kicks every shape at five seconds and some move
+// fast enough to be swept. A scene file turns the knobs (docs/scene_format.md). Two
+// seconds in, a box and a ball are thrown from the long slide.
 // A table, an option or a key a line, which the layout would re-wrap:
 // clang-format off
 const browser::StageDefaults kStage{
