@@ -89,7 +89,9 @@ bool gif_possible(bool gif_given, const std::string& program) {
 // The stage's key list, and the overlay key when it has an overlay.
 std::vector<KeyHelp> with_overlay_key(const StageDefaults& defaults) {
     std::vector<KeyHelp> keys = defaults.key_help;
-    if (!defaults.overlay.empty()) keys.push_back({key_name(kOverlayKey), "overlay on / off (see --overlay)"});
+    if (!defaults.overlay.empty())
+        keys.push_back(
+            {key_name(kOverlayKey), "overlay: off -> this stage's layer -> every layer -> off (see --overlay)"});
     return keys;
 }
 
@@ -178,7 +180,8 @@ struct OptionTexts {
     std::string out, frames, from = "0", every, gif_every, seed, keys;
     std::string frame_ms;  // read only when given, so the default stays exactly 1000/60
     std::string scale = "1";
-    bool gif = false, no_gif = false, live = false, overlay = false;  // switches: no value to check
+    bool gif = false, no_gif = false, live = false, overlay = false,
+         overlay_all = false;  // switches: no value to check
     std::string record, live_events, live_screenshot;
     std::map<std::string, std::string> extra;  // the stage's own options, by name
 };
@@ -219,7 +222,10 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
         ->type_name("K")
         ->capture_default_str();
     if (!defaults.overlay.empty()) {
-        app.add_flag("--overlay", texts.overlay, "start with the overlay on: " + defaults.overlay);
+        app.add_flag("--overlay", texts.overlay,
+                     "start with the overlay on, this stage's own layer: " + defaults.overlay);
+        app.add_flag("--overlay-all", texts.overlay_all,
+                     "start with the overlay on, the layers of every stage before this one too");
     }
     app.add_flag("--live", texts.live, "play the page in a window, keys from the keyboard (Escape ends)");
     app.add_option("--record", texts.record,
@@ -247,7 +253,7 @@ void declare_options(CLI::App& app, OptionTexts& texts, const StageDefaults& def
 // with a value is more likely a slip, and --no-gif says it plainly.
 void refuse_switch_values(const std::vector<std::string>& arguments) {
     for (const std::string& argument : arguments) {
-        for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay="}) {
+        for (const std::string_view flag : {"--gif=", "--no-gif=", "--live=", "--overlay=", "--overlay-all="}) {
             if (argument.starts_with(flag)) {
                 throw UsageError(std::string(flag.substr(0, flag.size() - 1)) + ": takes no value (got " +
                                  in_quotes(argument) + ")");
@@ -349,7 +355,11 @@ LiveOptions live_options(const CLI::App& app, const OptionTexts& texts, const St
         {"--seed", texts.seed}, {"--frame-ms", texts.frame_ms}, {"--scale", texts.scale}};
     for (const auto& [name, value] : texts.extra) shaping.emplace_back(name, value);
     live.replay_command = replay_command(app, argc, argv, program, shaping);
-    if (texts.overlay) live.replay_command.emplace_back("--overlay");
+    if (texts.overlay_all) {
+        live.replay_command.emplace_back("--overlay-all");
+    } else if (texts.overlay) {
+        live.replay_command.emplace_back("--overlay");
+    }
     // The stage's pictures; for a stage that saves none but final.png, one a half second.
     live.replay_every = defaults.every > 0 ? defaults.every : 30;
     live.replay_gif = !defaults.gif && gif_supported();
@@ -389,6 +399,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         options.extra = texts.extra;
         options.overlay_offered = !defaults.overlay.empty();
         options.overlay = texts.overlay;
+        options.overlay_all = texts.overlay_all;
         if (texts.live) options.live = live_options(app, texts, defaults, argc, argv, program);
         // Last, so the note about a skipped GIF never comes with an error about another option.
         options.gif = !texts.live && want_gif && gif_possible(texts.gif, program);

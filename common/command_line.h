@@ -2,7 +2,8 @@
 // One command-line shape for every stage (CLI11):
 //   --out DIR  --frames N  --from F  --every K  --seed S  --keys SCRIPT  --frame-ms MS
 //   --gif  --no-gif  --gif-every N  --scale K  --live  --record FILE  --help
-// and, on a stage with an overlay (StageDefaults::overlay), --overlay and the key t
+// and, on a stage with an overlay (StageDefaults::overlay), --overlay, --overlay-all and
+// the key t
 // plus text options a stage adds (--scene FILE, --dump FILE, ... in later chapters):
 // list them in StageDefaults::extra_options and read their values from Options::extra.
 // CLI11 stays inside command_line.cpp, so stages never see it.
@@ -51,8 +52,8 @@ struct StageDefaults {
     std::string overlay;
 };
 
-// The key that turns a stage's overlay on and off, live or in a key script; no stage
-// uses it for anything else.
+// The key that takes a stage's overlay round (off, the stage's own layer, every layer),
+// live or in a key script; no stage uses it for anything else.
 inline constexpr Key kOverlayKey = Key::T;
 
 // A --live session: the page in a window, played from the keyboard (live.h).
@@ -92,8 +93,9 @@ struct Options {
     int scale = 1;      // device pixels per canvas pixel, along each axis (--scale)
     KeySet stage_keys;  // the keys the stage's page reacts to (empty: any)
     LiveOptions live;
-    bool overlay_offered = false;  // the stage has an overlay: kOverlayKey turns it on and off
-    bool overlay = false;          // --overlay: it is on from the first frame
+    bool overlay_offered = false;  // the stage has an overlay: kOverlayKey takes it round
+    bool overlay = false;          // --overlay: it is on from the first frame, the stage's own layer
+    bool overlay_all = false;      // --overlay-all: on from the first frame, every stage's layers
     // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
     std::map<std::string, std::string> extra;
 };

@@ -131,6 +131,7 @@ public:
 
     void show(const Image& picture) override {
         if (!window_) open(picture.width, picture.height);
+        if (picture.width != width_ || picture.height != height_) resize(picture.width, picture.height);
         if (SDL_UpdateTexture(texture_.get(), nullptr, picture.rgba.data(), picture.width * 4) != 0) {
             fail("cannot update the picture");
         }
@@ -180,13 +181,26 @@ private:
         renderer_.reset(SDL_CreateRenderer(window_.get(), -1, SDL_RENDERER_PRESENTVSYNC));
         if (!renderer_) renderer_.reset(SDL_CreateRenderer(window_.get(), -1, 0));
         if (!renderer_) fail("cannot draw in the window");
+        makeTexture(width, height);
+        SDL_SetRenderDrawColor(renderer_.get(), 0, 0, 0, 255);
+        SDL_StopTextInput();  // keys only: no input method composing text
+        next_frame_ms_ = now_ms() + settings_.frame_ms;
+    }
+
+    void makeTexture(int width, int height) {
         texture_.reset(
             SDL_CreateTexture(renderer_.get(), SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height));
         if (!texture_) fail("cannot make a picture of that size");
         SDL_SetTextureBlendMode(texture_.get(), SDL_BLENDMODE_NONE);  // copied as it is, alpha included
-        SDL_SetRenderDrawColor(renderer_.get(), 0, 0, 0, 255);
-        SDL_StopTextInput();  // keys only: no input method composing text
-        next_frame_ms_ = now_ms() + settings_.frame_ms;
+        width_ = width;
+        height_ = height;
+    }
+
+    // The page grew (the overlay's legend gets its band the first time the overlay
+    // comes on, page.h): the window grows with it, one picture pixel a window pixel.
+    void resize(int width, int height) {
+        SDL_SetWindowSize(window_.get(), width, height);
+        makeTexture(width, height);
     }
 
     static double now_ms() {
@@ -226,7 +240,8 @@ private:
     std::unique_ptr<SDL_Window, WindowDeleter> window_;
     std::unique_ptr<SDL_Renderer, RendererDeleter> renderer_;
     std::unique_ptr<SDL_Texture, TextureDeleter> texture_;
-    Image shown_;  // the last picture shown, as read back (screenshot hook only)
+    int width_ = 0, height_ = 0;  // the texture's, which is the picture's
+    Image shown_;                 // the last picture shown, as read back (screenshot hook only)
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "text.h"
@@ -37,6 +38,17 @@ void stroked(Canvas& canvas, Color color, Draw draw) {
 }
 
 }  // namespace
+
+std::string fixed(double value, int decimals) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char text[400];  // the largest double has 309 digits before the point
+    std::snprintf(text, sizeof text, "%.*f", std::clamp(decimals, 0, 6), value);
+    std::string shown(text);
+    // A tiny negative rounds to "-0.00": the sign says nothing a reader can see.
+    if (shown.front() == '-' && shown.find_first_not_of("-0.") == std::string::npos) shown.erase(0, 1);
+    return shown;
+}
 
 void line(Canvas& canvas, Vec2 from, Vec2 to, Color color) {
     stroked(canvas, color, [&] {
@@ -97,7 +109,8 @@ void LabelLayout::place(Canvas& canvas, Vec2 at, Color color, std::string_view t
     const double width = text_width(text), height = text_line_height();
     Box box{at.x, at.y, at.x + width, at.y + height};
     const auto overlaps = [&box](const Box& other) {
-        return box.left < other.right && other.left < box.right && box.top < other.bottom && other.top < box.bottom;
+        return box.left < other.right + kLabelGap && other.left < box.right + kLabelGap && box.top < other.bottom &&
+               other.top < box.bottom;
     };
     // Each move clears at least the box it overlapped, so this ends within placed_.size() moves.
     for (auto crossed = std::find_if(placed_.begin(), placed_.end(), overlaps); crossed != placed_.end();

@@ -4,6 +4,7 @@
 // (page.h's Document::legend) names. Every word keeps the canvas's styles and transform
 // as it found them, so the page's own drawing after it is unchanged.
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,6 +22,12 @@ inline constexpr double kHeadAngle = 0.45;  // rad, about 26 degrees
 // How far a marker's cross reaches each way from its point, and where its label goes.
 inline constexpr double kMarkerReach = 3.0;           // px
 inline constexpr lib::Vec2 kLabelOffset{5.0, -16.0};  // px, from the point to the label's top-left
+
+// An overlay's number as a reader compares it across a picture: always `decimals`
+// digits after the point, never exponent notation, never "-0": a resting contact's
+// depth reads "0.00", not "3.19e-10", and a hard hit's impulse "2520.00", not "2.52e+3".
+// A number that is not finite reads "nan" or "inf".
+std::string fixed(double value, int decimals);
 
 // A straight line from `from` to `to` (a pair, a lever arm).
 void line(Canvas& canvas, lib::Vec2 from, lib::Vec2 to, Color color);
@@ -46,7 +53,10 @@ void label(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);
 
 // Labels that must stay readable where what they label crowds together (a pile of
 // shapes): each goes where it is asked to, or as many lines lower as it takes to clear
-// the labels placed before it. One layout a frame.
+// the labels placed before it, with kLabelGap to spare on either side, so two labels on
+// one line never run into each other. One layout a frame.
+inline constexpr double kLabelGap = 6.0;  // px between two labels side by side
+
 class LabelLayout {
 public:
     void place(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);

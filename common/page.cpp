@@ -54,14 +54,20 @@ void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
     }
 }
 
-// Where the legend's box starts (page pixels): above the panel's bottom by its entries.
-int legend_top(const Document& document) {
-    const int entries = static_cast<int>(document.legend.size());
-    const int bottom = document.canvas.height() - kPanelMargin / 2;
-    return std::max(0, bottom - entries * kLineHeight - kPanelMargin);
+// The legend's band (Document::legend_room): kLegendRows lines of entries in columns
+// kLegendColumnWidth wide, as many as the page's width holds, filled top to bottom and
+// then left to right, so that each layer's entries stay together.
+constexpr int kLegendRows = 7;
+constexpr int kLegendColumnWidth = 390;
+
+int legend_columns(int page_width) { return std::max(1, (page_width - kPanelMargin) / kLegendColumnWidth); }
+
+int legend_height(const Document& document) {
+    if (!document.legend_room && document.legend.empty()) return 0;
+    return kLegendRows * kLineHeight + kPanelMargin;
 }
 
-void draw_legend(Image& page, const Document& document);
+void draw_legend(Image& page, const Document& document, int top);
 
 // The band under the page (Document::beyond_echo): its first line this far below the
 // canvas, and a half margin under its last.
@@ -92,7 +98,9 @@ Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
     const int scale = document.canvas.scale();
     const std::vector<std::string> beyond = beyond_lines(document);
-    Image page(canvas.width + kPanelWidth * scale, canvas.height + band_height(beyond) * scale, colors::kWhite);
+    const int legend_top = document.canvas.height() + band_height(beyond);
+    Image page(canvas.width + kPanelWidth * scale,
+               canvas.height + (band_height(beyond) + legend_height(document)) * scale, colors::kWhite);
     page.paste(canvas, 0, 0);
 
     // The frame lies on the canvas's outermost pixels (its outermost `scale` rows and
@@ -114,9 +122,7 @@ Image render_page(const Document& document) {
     // Laid out in page pixels, drawn in device pixels.
     const int text_left = document.canvas.width() + kPanelMargin;
     const int text_width_limit = kPanelWidth - 2 * kPanelMargin;
-    // Under a legend the echo stops a whole line short of its box, so no half-hidden
-    // line shows beneath it.
-    const int text_bottom = document.legend.empty() ? document.canvas.height() + kLineHeight : legend_top(document);
+    const int text_bottom = document.canvas.height() + kLineHeight;
     int y = kPanelMargin;
     std::string_view echo = document.ui_echo;
     while (!echo.empty() && y + kLineHeight <= text_bottom) {
@@ -128,7 +134,6 @@ Image render_page(const Document& document) {
             y += kLineHeight;
         }
     }
-    draw_legend(page, document);
     // The stage's own section, on the band: under the panel's lines, where a reader of
     // the panel goes on reading.
     y = document.canvas.height() + kBandGap;
@@ -136,31 +141,39 @@ Image render_page(const Document& document) {
         draw_text(page, line, text_left * scale, y * scale, kTextColor, scale);
         y += kLineHeight;
     }
+    draw_legend(page, document, legend_top);
     return page;
 }
 
 namespace {
 
-// The legend covers the bottom of the echo panel (in chapter 4 the echo fills the panel,
-// and the canvas is the scene's): the key list hidden under it is still in --help, and
-// the overlay key brings it back.
-void draw_legend(Image& page, const Document& document) {
-    if (document.legend.empty()) return;
+// The legend in its band under everything else, so it never covers a line of the echo
+// nor of the stage's own section: a box the page's width, a swatch and a line for each
+// entry. Entries beyond what the band holds give way to a last line that counts them.
+void draw_legend(Image& page, const Document& document, int top) {
+    if (document.legend.empty()) return;  // the room kept for it stays blank
     const int k = document.canvas.scale();
-    const int left = document.canvas.width() + kPanelMargin / 2;
-    const int right = document.canvas.width() + kPanelWidth - kPanelMargin / 2;
-    const int bottom = document.canvas.height() - kPanelMargin / 2;
-    const int top = legend_top(document);
+    const int width = page.width / k;
+    const int left = kPanelMargin / 2, right = width - kPanelMargin / 2;
+    const int bottom = top + legend_height(document) - kPanelMargin / 2;
     fill(page, left * k, top * k, right * k, bottom * k, kLegendBorder);
     fill(page, (left + 1) * k, (top + 1) * k, (right - 1) * k, (bottom - 1) * k, colors::kWhite);
-    int y = top + kPanelMargin / 2;
-    for (const LegendEntry& entry : document.legend) {
+    const std::size_t cells = static_cast<std::size_t>(legend_columns(width)) * kLegendRows;
+    const std::size_t shown = document.legend.size() <= cells ? document.legend.size() : cells - 1;
+    for (std::size_t index = 0; index <= shown && index < cells; ++index) {
+        const int column = static_cast<int>(index) / kLegendRows, row = static_cast<int>(index) % kLegendRows;
+        const int x = left + kPanelMargin / 2 + column * kLegendColumnWidth;
+        const int y = top + kPanelMargin / 2 + row * kLineHeight;
+        if (index == shown) {
+            if (shown == document.legend.size()) break;
+            const std::string more = std::to_string(document.legend.size() - shown) + " more entries";
+            draw_text(page, more, x * k, y * k, kTextColor, k);
+            break;
+        }
+        const LegendEntry& entry = document.legend[index];
         const int swatch_top = y + (kLineHeight - kSwatchSize) / 2 - 2;
-        fill(page, (left + kPanelMargin / 2) * k, swatch_top * k, (left + kPanelMargin / 2 + kSwatchSize) * k,
-             (swatch_top + kSwatchSize) * k, entry.color);
-        const int text_left = left + kPanelMargin / 2 + kSwatchSize + kSwatchGap;
-        draw_text(page, entry.text, text_left * k, y * k, kTextColor, k);
-        y += kLineHeight;
+        fill(page, x * k, swatch_top * k, (x + kSwatchSize) * k, (swatch_top + kSwatchSize) * k, entry.color);
+        draw_text(page, entry.text, (x + kSwatchSize + kSwatchGap) * k, y * k, kTextColor, k);
     }
 }
 

@@ -25,6 +25,10 @@ struct Window {
     // turned by kOverlayKey. The page reads it; the browser owns it, as it owns the
     // clock, so the page's own scripts stay the book's.
     bool overlay = false;
+    // Which layers it draws: false, the stage's own technique (and what a reader needs to
+    // read it); true, the layers of every stage before it too (--overlay-all, or
+    // kOverlayKey pressed while the stage's own layer shows).
+    bool overlay_all = false;
 };
 
 // What a stage's index.html registers with the browser.
@@ -35,8 +39,9 @@ public:
     virtual void onAnimationFrame() = 0;  // the requestAnimationFrame callback
 };
 
-// A key press reaching the page: on a stage with an overlay, kOverlayKey turns
-// window.overlay on or off; every other key goes to the page's onKeyDown.
+// A key press reaching the page: on a stage with an overlay, kOverlayKey takes the
+// overlay one step round off -> the stage's own layer -> every layer -> off; every
+// other key goes to the page's onKeyDown.
 void press_key(PageScripts& scripts, Window& window, const Options& options, Key key);
 
 }  // namespace browser

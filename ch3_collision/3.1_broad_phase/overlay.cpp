@@ -3,7 +3,6 @@
 #include <string>
 #include <vector>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -38,8 +37,8 @@ void drawBroadPhase(Sheet& sheet, const Core& core) {
         const RigidShape& a = core.object(pair.first);
         const RigidShape& b = core.object(pair.second);
         draw::line(sheet.canvas, a.center(), b.center(), kPairColor);
-        const std::string test = browser::to_precision(a.center().distance(b.center()), 3) +
-                                 " <= " + browser::to_precision(a.boundRadius() + b.boundRadius(), 3);
+        const std::string test = draw::fixed(a.center().distance(b.center()), 1) +
+                                 " <= " + draw::fixed(a.boundRadius() + b.boundRadius(), 1) + " px";
         sheet.labels.place(sheet.canvas, (a.center() + b.center()) * 0.5 + Vec2{4, 2}, kPairColor, test);
     }
     const std::size_t tested =

@@ -3,7 +3,6 @@
 #include <string>
 #include <vector>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -38,7 +37,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});

@@ -42,7 +42,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
-    .overlay = "the collision info, and each moving shape's velocity and spin",
+    .overlay = "each moving shape's velocity and spin (--overlay-all: the collision info under them)",
 };
 // clang-format on
 

@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -41,7 +40,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -76,7 +75,9 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawCollisionInfo(sheet, core);
+    // 4.1's own layer is the motion; every layer adds chapter 3's collision info.
+    const bool all = window.overlay_all;
+    if (all) drawCollisionInfo(sheet, core);
     drawMotion(sheet, core);
 }
 

@@ -44,7 +44,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
-    .overlay = "the collision info, each moving shape's velocity and spin, and the positional correction",
+    .overlay = "the positional correction of the last step (--overlay-all: the collision info, velocities and spins too)",
 };
 // clang-format on
 

@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -43,7 +42,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -101,8 +100,13 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
+    // 4.2's own layer is the correction; every layer adds the collision info and the
+    // motion of the stages before.
+    const bool all = window.overlay_all;
+    if (all) {
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+    }
     drawCorrection(sheet, core);
 }
 

@@ -47,7 +47,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first six objects"},
     },
-    .overlay = "the collision info, velocities and spins, the positional correction, and the impulses",
+    .overlay = "the impulses of the last step (--overlay-all: the collision info, velocities and spins, the correction too)",
 };
 // clang-format on
 

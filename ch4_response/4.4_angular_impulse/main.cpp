@@ -46,7 +46,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes",
+    .overlay = "the impulses, lever arms and spin changes (--overlay-all: the collision info, velocities and spins, the correction too)",
 };
 // clang-format on
 

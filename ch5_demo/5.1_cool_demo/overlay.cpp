@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -48,7 +47,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -120,7 +119,7 @@ void drawImpulses(Sheet& sheet, const Core& core) {
         impulseArrow(sheet.canvas, response.contact, response.normal_impulse, kNormalImpulseColor);
         impulseArrow(sheet.canvas, response.contact, response.tangent_impulse, kTangentImpulseColor);
         sheet.labels.place(sheet.canvas, response.contact + Vec2{6, 4}, kNormalImpulseColor,
-                           browser::to_precision(normal, 3) + " / " + browser::to_precision(tangent, 3));
+                           draw::fixed(normal, 2) + " / " + draw::fixed(tangent, 2));
     }
     sheet.legend.push_back({kNormalImpulseColor, "normal impulse jN, 2 px a unit"});
     sheet.legend.push_back({kTangentImpulseColor, "tangent impulse jT (label: jN / jT)"});
@@ -154,9 +153,15 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
-    drawCorrection(sheet, core);
+    // 4.4's own layer is the lever arms, with the impulses that act at their end (a
+    // lever arm reads only with its impulse); every layer adds the collision info, the
+    // motion and the correction of the stages before.
+    const bool all = window.overlay_all;
+    if (all) {
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+        drawCorrection(sheet, core);
+    }
     drawImpulses(sheet, core);
     drawLeverArms(sheet, core);
 }

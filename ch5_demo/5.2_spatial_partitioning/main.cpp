@@ -41,7 +41,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells, its candidate pairs, and the pair tests it saves",
+    .overlay = "the grid's cells, its candidate pairs, and the pair tests it saves (--overlay-all: chapter 3's and 4's layers too)",
 };
 // clang-format on
 

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "grid_overlay.h"
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -49,7 +48,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -121,7 +120,7 @@ void drawImpulses(Sheet& sheet, const Core& core) {
         impulseArrow(sheet.canvas, response.contact, response.normal_impulse, kNormalImpulseColor);
         impulseArrow(sheet.canvas, response.contact, response.tangent_impulse, kTangentImpulseColor);
         sheet.labels.place(sheet.canvas, response.contact + Vec2{6, 4}, kNormalImpulseColor,
-                           browser::to_precision(normal, 3) + " / " + browser::to_precision(tangent, 3));
+                           draw::fixed(normal, 2) + " / " + draw::fixed(tangent, 2));
     }
     sheet.legend.push_back({kNormalImpulseColor, "normal impulse jN, 2 px a unit"});
     sheet.legend.push_back({kTangentImpulseColor, "tangent impulse jT (label: jN / jT)"});
@@ -155,12 +154,18 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
+    // 5.2's own layer is the grid (grid_overlay.h); every layer adds chapter 3's and
+    // chapter 4's: the collision info, the motion, the correction, the impulses and
+    // lever arms.
+    const bool all = window.overlay_all;
     drawGrid(sheet.canvas, core, legend);
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
-    drawCorrection(sheet, core);
-    drawImpulses(sheet, core);
-    drawLeverArms(sheet, core);
+    if (all) {
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+        drawCorrection(sheet, core);
+        drawImpulses(sheet, core);
+        drawLeverArms(sheet, core);
+    }
 }
 
 }  // namespace engine

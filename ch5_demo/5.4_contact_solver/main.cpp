@@ -41,7 +41,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells and candidate pairs; on the sequential impulse solver its contacts: faces, points, impulses",
+    .overlay = "on the sequential impulse solver its contacts: faces, points, impulses; on the book's, the impulses and lever arms (--overlay-all: the grid, chapter 3's and 4's layers too)",
 };
 // clang-format on
 

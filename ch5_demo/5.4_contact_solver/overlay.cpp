@@ -6,7 +6,6 @@
 
 #include "contact_overlay.h"
 #include "grid_overlay.h"
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -50,7 +49,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -122,7 +121,7 @@ void drawImpulses(Sheet& sheet, const Core& core) {
         impulseArrow(sheet.canvas, response.contact, response.normal_impulse, kNormalImpulseColor);
         impulseArrow(sheet.canvas, response.contact, response.tangent_impulse, kTangentImpulseColor);
         sheet.labels.place(sheet.canvas, response.contact + Vec2{6, 4}, kNormalImpulseColor,
-                           browser::to_precision(normal, 3) + " / " + browser::to_precision(tangent, 3));
+                           draw::fixed(normal, 2) + " / " + draw::fixed(tangent, 2));
     }
     sheet.legend.push_back({kNormalImpulseColor, "normal impulse jN, 2 px a unit"});
     sheet.legend.push_back({kTangentImpulseColor, "tangent impulse jT (label: jN / jT)"});
@@ -156,12 +155,22 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawGrid(sheet.canvas, core, legend);
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
-    drawCorrection(sheet, core);
-    drawImpulses(sheet, core);
-    drawLeverArms(sheet, core);
+    // 5.4's own layer is the solver's contacts (contact_overlay.h): faces, clipped
+    // points, their impulses. On the book's solver it has none, and shows what the book's
+    // passes give at their contacts instead: the impulses and lever arms of 4.4. Every
+    // layer adds the grid and chapter 3's and 4's layers.
+    const bool all = window.overlay_all;
+    const bool book_solver = core.settings().solver == SolverKind::book;
+    if (all) {
+        drawGrid(sheet.canvas, core, legend);
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+        drawCorrection(sheet, core);
+    }
+    if (all || book_solver) {
+        drawImpulses(sheet, core);
+        drawLeverArms(sheet, core);
+    }
     drawContacts(sheet.canvas, core, legend);
 }
 

@@ -1,8 +1,13 @@
 #pragma once
 // The stage's overlay (--overlay, or the key t live and in key scripts): what the
-// engine computed this frame, drawn over the book's picture, with a legend at the
-// bottom of the echo panel that names each colour. The book's pictures stay the book's:
-// with the overlay off nothing here draws.
+// engine computed this frame, drawn over the book's picture, with a legend in a band
+// under the page that names each colour. The book's pictures stay the book's: with the
+// overlay off nothing here draws.
+//
+// It comes in layers: by default the stage's own technique (with what a reader needs to
+// read it); the key t pressed again, or --overlay-all, adds the layers of the stages
+// before (drawOverlay says which). Its numbers are fixed decimals with their unit, and
+// its labels never cover each other.
 //
 // From 3.2 on the pass finds the collision info of each colliding pair (Figure
 // 3-6), and the overlay shows it all: the start and the end of the overlap, the normal

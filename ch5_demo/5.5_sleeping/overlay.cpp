@@ -7,7 +7,6 @@
 #include "contact_overlay.h"
 #include "grid_overlay.h"
 #include "islands_overlay.h"
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -51,7 +50,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -123,7 +122,7 @@ void drawImpulses(Sheet& sheet, const Core& core) {
         impulseArrow(sheet.canvas, response.contact, response.normal_impulse, kNormalImpulseColor);
         impulseArrow(sheet.canvas, response.contact, response.tangent_impulse, kTangentImpulseColor);
         sheet.labels.place(sheet.canvas, response.contact + Vec2{6, 4}, kNormalImpulseColor,
-                           browser::to_precision(normal, 3) + " / " + browser::to_precision(tangent, 3));
+                           draw::fixed(normal, 2) + " / " + draw::fixed(tangent, 2));
     }
     sheet.legend.push_back({kNormalImpulseColor, "normal impulse jN, 2 px a unit"});
     sheet.legend.push_back({kTangentImpulseColor, "tangent impulse jT (label: jN / jT)"});
@@ -157,14 +156,20 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawGrid(sheet.canvas, core, legend);
+    // 5.5's own layer is the islands (islands_overlay.h): each in its colour, the rest
+    // timers, the sleepers. Every layer adds the grid, chapter 3's and 4's layers, and
+    // 5.4's contacts.
+    const bool all = window.overlay_all;
+    if (all) drawGrid(sheet.canvas, core, legend);
     drawIslands(sheet.canvas, sheet.labels, core, legend);
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
-    drawCorrection(sheet, core);
-    drawImpulses(sheet, core);
-    drawLeverArms(sheet, core);
-    drawContacts(sheet.canvas, core, legend);
+    if (all) {
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+        drawCorrection(sheet, core);
+        drawImpulses(sheet, core);
+        drawLeverArms(sheet, core);
+        drawContacts(sheet.canvas, core, legend);
+    }
 }
 
 }  // namespace engine

@@ -44,7 +44,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the islands, each in its colour, and each shape's rest timer as a ring; the collision info, velocities and spins, the correction, the impulses, lever arms and spin changes; the grid's cells and candidate pairs; on the sequential impulse solver its contacts: faces, points, impulses",
+    .overlay = "each fast shape's sweep and where it stopped, and how many were swept (--overlay-all: the grid, the islands, chapter 3's and 4's layers, the contacts too)",
 };
 // clang-format on
 

@@ -7,7 +7,6 @@
 #include "contact_overlay.h"
 #include "grid_overlay.h"
 #include "islands_overlay.h"
-#include "number_format.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -53,7 +52,7 @@ void drawCollisionInfo(Sheet& sheet, const Core& core) {
         draw::marker(sheet.canvas, info.start(), kStartColor);
         draw::marker(sheet.canvas, info.end(), kEndColor);
         sheet.labels.place(sheet.canvas, info.end() + draw::kLabelOffset, kEndColor,
-                           "depth " + browser::to_precision(info.depth(), 3));
+                           "depth " + draw::fixed(info.depth(), 2) + " px");
     }
     sheet.legend.push_back({kStartColor, "start: where the overlap starts"});
     sheet.legend.push_back({kEndColor, "end = start + normal * depth"});
@@ -125,7 +124,7 @@ void drawImpulses(Sheet& sheet, const Core& core) {
         impulseArrow(sheet.canvas, response.contact, response.normal_impulse, kNormalImpulseColor);
         impulseArrow(sheet.canvas, response.contact, response.tangent_impulse, kTangentImpulseColor);
         sheet.labels.place(sheet.canvas, response.contact + Vec2{6, 4}, kNormalImpulseColor,
-                           browser::to_precision(normal, 3) + " / " + browser::to_precision(tangent, 3));
+                           draw::fixed(normal, 2) + " / " + draw::fixed(tangent, 2));
     }
     sheet.legend.push_back({kNormalImpulseColor, "normal impulse jN, 2 px a unit"});
     sheet.legend.push_back({kTangentImpulseColor, "tangent impulse jT (label: jN / jT)"});
@@ -160,9 +159,11 @@ void drawSweeps(Sheet& sheet, const Core& core) {
         draw::line(sheet.canvas, sweep.from, sweep.to, kSweepColor);
         if (sweep.impact) draw::marker(sheet.canvas, sweep.from + (sweep.to - sweep.from) * *sweep.impact, kSweepColor);
     }
-    if (!core.continuous().sweeps().empty()) {
-        sheet.legend.push_back({kSweepColor, "fast shape: path, where stopped"});
-    }
+    // Always in the legend, the count with it: "0 swept" says the sweep ran and found no
+    // shape fast enough, where a missing line would say nothing.
+    sheet.legend.push_back({kSweepColor, "fast shape: path, where stopped"});
+    sheet.legend.push_back({kSweepColor, "swept this step: " + std::to_string(core.continuous().sweeps().size()) +
+                                             (core.settings().continuous ? "" : " (continuous off)")});
 }
 
 }  // namespace
@@ -172,14 +173,19 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    drawGrid(sheet.canvas, core, legend);
-    drawIslands(sheet.canvas, sheet.labels, core, legend);
-    drawCollisionInfo(sheet, core);
-    drawMotion(sheet, core);
-    drawCorrection(sheet, core);
-    drawImpulses(sheet, core);
-    drawLeverArms(sheet, core);
-    drawContacts(sheet.canvas, core, legend);
+    // 5.6's own layer is the sweeps (continuous.h). Every layer adds the grid, 5.5's
+    // islands, chapter 3's and 4's layers, and 5.4's contacts.
+    const bool all = window.overlay_all;
+    if (all) {
+        drawGrid(sheet.canvas, core, legend);
+        drawIslands(sheet.canvas, sheet.labels, core, legend);
+        drawCollisionInfo(sheet, core);
+        drawMotion(sheet, core);
+        drawCorrection(sheet, core);
+        drawImpulses(sheet, core);
+        drawLeverArms(sheet, core);
+        drawContacts(sheet.canvas, core, legend);
+    }
     drawSweeps(sheet, core);
 }
 

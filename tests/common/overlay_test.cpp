@@ -3,6 +3,7 @@
 // canvas's fillText and fillRect, and the legend box at the bottom of the echo panel.
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "overlay_draw.h"
 #include "page.h"
 #include "scratch_folder.h"
+#include "text.h"
 
 using browser::Color;
 using browser::Key;
@@ -76,18 +78,35 @@ TEST_CASE("overlay: --overlay and the key t exist only on a stage with an overla
     CHECK(parse({"--keys", "t"}, without_overlay(), &err).exit_status == 2);
     CHECK(err.find("\"t\"") != std::string::npos);
     CHECK(parse({"--overlay=1"}, kWithOverlay, &err).exit_status == 2);
+    CHECK(parse({"--overlay-all=1"}, kWithOverlay, &err).exit_status == 2);
+    CHECK(parse({"--overlay-all"}, without_overlay(), &err).exit_status == 2);
+
+    const auto all = parse({"--overlay-all"}, kWithOverlay);
+    REQUIRE(all.options);
+    CHECK(all.options->overlay_all);
+    const browser::Window window(*all.options);
+    CHECK(window.overlay);  // every layer is the overlay on
+    CHECK(window.overlay_all);
 }
 
-TEST_CASE("overlay: the key t turns the window's overlay and never reaches the page") {
+TEST_CASE(
+    "overlay: the key t takes the window's overlay round (own layer, every layer, off) and never reaches the "
+    "page") {
     const auto parsed = parse({"--overlay"}, kWithOverlay);
     REQUIRE(parsed.options);
     browser::Window window(*parsed.options);
     CHECK(window.overlay);
+    CHECK_FALSE(window.overlay_all);  // --overlay: the stage's own layer
     CountingScripts scripts;
     browser::press_key(scripts, window, *parsed.options, browser::kOverlayKey);
+    CHECK(window.overlay);
+    CHECK(window.overlay_all);
+    browser::press_key(scripts, window, *parsed.options, browser::kOverlayKey);
     CHECK_FALSE(window.overlay);
+    CHECK_FALSE(window.overlay_all);
     browser::press_key(scripts, window, *parsed.options, browser::kOverlayKey);
     CHECK(window.overlay);
+    CHECK_FALSE(window.overlay_all);
     CHECK(scripts.keys == 0);
     browser::press_key(scripts, window, *parsed.options, Key::F);
     CHECK(scripts.keys == 1);
@@ -148,23 +167,32 @@ TEST_CASE("overlay: fillRect fills the pixels whose centres it covers, translate
     CHECK(canvas.pixels().at(2, 4) == browser::colors::kWhite);
 }
 
-TEST_CASE("overlay: the legend is a box at the bottom of the echo panel, a swatch a line") {
-    browser::Document document{browser::Canvas(200, 300), "echo"};
+TEST_CASE("overlay: the legend is a band under the page, a swatch a line, and covers no line of the echo") {
+    // An echo that fills the panel to its bottom, as chapter 4's does.
+    std::string echo;
+    for (int line = 0; line < 20; ++line) echo += "echo line\n";
+    browser::Document document{browser::Canvas(200, 300), echo};
     const browser::Image without = browser::render_page(document);
     document.legend = {{kPurple, "one"}, {browser::colors::kRed, "two"}};
     const browser::Image with = browser::render_page(document);
-    // The swatches stand at the panel's left, one over the other, in the lowest
-    // 60 px of the page; nothing above the box changed.
-    int purple_rows = 0, red_rows = 0, lowest_purple = 0, highest_red = 300;
+    // The page grew by the band: seven lines of 18 px and a margin of 10.
+    REQUIRE(with.width == without.width);
+    REQUIRE(with.height == 300 + 7 * 18 + 10);
+    // Everything above the band is the page without a legend: every echo line whole.
     for (int j = 0; j < 300; ++j) {
-        for (int i = 200; i < 240; ++i) {
+        for (int i = 0; i < with.width; ++i) REQUIRE(with.at(i, j) == without.at(i, j));
+    }
+    // The swatches stand at the band's left, 12 px each, the first over the second.
+    int purple_rows = 0, red_rows = 0, lowest_purple = 0, highest_red = with.height;
+    for (int j = 300; j < with.height; ++j) {
+        for (int i = 0; i < 40; ++i) {
             if (with.at(i, j) == kPurple) {
                 ++purple_rows;
                 lowest_purple = std::max(lowest_purple, j);
                 break;
             }
         }
-        for (int i = 200; i < 240; ++i) {
+        for (int i = 0; i < 40; ++i) {
             if (with.at(i, j) == browser::colors::kRed) {
                 ++red_rows;
                 highest_red = std::min(highest_red, j);
@@ -175,8 +203,72 @@ TEST_CASE("overlay: the legend is a box at the bottom of the echo panel, a swatc
     CHECK(purple_rows == 12);
     CHECK(red_rows == 12);
     CHECK(lowest_purple < highest_red);
-    CHECK(highest_red > 240);
-    for (int j = 0; j < 200; ++j) {
-        for (int i = 0; i < with.width; ++i) REQUIRE(with.at(i, j) == without.at(i, j));
+}
+
+TEST_CASE("overlay: room kept for the legend keeps the page's size, and is blank while the overlay is off") {
+    browser::Document document{browser::Canvas(200, 300), "echo"};
+    const browser::Image book = browser::render_page(document);
+    document.legend_room = true;
+    const browser::Image room = browser::render_page(document);
+    document.legend = {{kPurple, "one"}};
+    const browser::Image shown = browser::render_page(document);
+    CHECK(room.height == shown.height);
+    CHECK(room.height > book.height);
+    for (int j = 0; j < room.height; ++j) {
+        for (int i = 0; i < room.width; ++i) {
+            REQUIRE(room.at(i, j) == (j < book.height ? book.at(i, j) : browser::colors::kWhite));
+        }
     }
+}
+
+TEST_CASE("overlay: a legend longer than its band counts the entries it has no room for") {
+    browser::Document document{browser::Canvas(200, 300), "echo"};  // a page 580 px wide: one column
+    for (int entry = 0; entry < 10; ++entry) document.legend.push_back({kPurple, "entry"});
+    const browser::Image page = browser::render_page(document);
+    // Seven rows: six swatches and the line "4 more entries", in black.
+    int swatches = 0, black_rows = 0;
+    for (int j = 300; j < page.height; ++j) {
+        bool purple = false, black = false;
+        for (int i = 0; i < 60; ++i) {
+            purple = purple || page.at(i, j) == kPurple;
+            black = black || page.at(i, j) == browser::colors::kBlack;
+        }
+        swatches += purple ? 1 : 0;
+        black_rows += black ? 1 : 0;
+    }
+    CHECK(swatches == 6 * 12);
+    CHECK(black_rows > 0);  // the count's text, where a seventh swatch would be
+}
+
+TEST_CASE("overlay: numbers read as fixed decimals, never in exponent notation, never -0") {
+    using browser::overlay::fixed;
+    CHECK(fixed(3.19e-10, 2) == "0.00");  // a resting contact's depth
+    CHECK(fixed(-3.19e-10, 2) == "0.00");
+    CHECK(fixed(2520.4, 2) == "2520.40");  // what to_precision(x, 3) printed as 2.52e+3
+    CHECK(fixed(6.004, 2) == "6.00");
+    CHECK(fixed(-1.5, 1) == "-1.5");
+    CHECK(fixed(12.0, 0) == "12");
+    CHECK(fixed(std::numeric_limits<double>::quiet_NaN(), 2) == "nan");
+    CHECK(fixed(-std::numeric_limits<double>::infinity(), 2) == "-inf");
+    CHECK(fixed(1e308, 2).size() == 309 + 3);  // every digit, none cut
+}
+
+TEST_CASE("overlay: two labels asked for one place stand apart, the second a line lower") {
+    browser::Canvas canvas(200, 100);
+    browser::overlay::LabelLayout labels;
+    labels.place(canvas, {10, 10}, kPurple, "depth 6.00 px");
+    // Asked for the spot just right of the first label's end: kLabelGap would be
+    // crossed, so it goes a line lower instead of running into the first.
+    labels.place(canvas, {10.0 + browser::text_width("depth 6.00 px") + 2.0, 10.0}, kPurple, "depth 6.02 px");
+    int rows_with_ink = 0;
+    for (int j = 0; j < 100; ++j) {
+        for (int i = 0; i < 200; ++i) {
+            if (same(canvas.pixels().at(i, j), kPurple)) {
+                ++rows_with_ink;
+                break;
+            }
+        }
+    }
+    // Two lines of text: more rows than one line's glyphs reach.
+    CHECK(rows_with_ink > browser::text_line_height());
 }

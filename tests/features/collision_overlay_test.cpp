@@ -42,6 +42,7 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
     page.core.add(engine::Circle({200.5, 100.5}, 20));
     page.core.add(engine::Circle({230.5, 100.5}, 20));
     page.window.overlay = true;
+    page.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const browser::Document& document = page.window.document;

@@ -29,6 +29,7 @@ TEST_CASE("correction overlay: the move of one pass, ten times longer, from the 
     page.core.add(engine::Circle({200.5, 100.5}, 20, engine::PhysicalAttributes{.mass = 0.0}));
     page.core.add(engine::Circle({238.5, 100.5}, 20));
     page.window.overlay = true;
+    page.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const double moved = 2.0 * settings.correction_rate;
@@ -63,6 +64,7 @@ TEST_CASE("correction overlay: the physics keeps its record only while the overl
         page->core.add(engine::Circle({238.5, 100.5}, 20));
     }
     shown.window.overlay = true;
+    shown.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     for (test::WorldFixture* page : {&plain, &shown}) {
         page->window.clock.advanceFrame();
         page->core.runGameLoop();
@@ -92,6 +94,7 @@ TEST_CASE("correction overlay: the book's scene run with the overlay off keeps n
     test::StageFixture plain;
     test::StageFixture shown;
     shown.window.overlay = true;
+    shown.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     for (test::StageFixture* page : {&plain, &shown}) {
         test::buildBookScene(page->core, page->random);
         page->press(browser::Key::H);

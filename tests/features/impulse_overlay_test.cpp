@@ -27,6 +27,7 @@ TEST_CASE("impulse overlay: a head-on bounce off a static circle, by Newton's la
     engine::Circle& ball = page.core.add(engine::Circle({238.5, 100.5}, 20));
     ball.setVelocity({-60, 0});
     page.window.overlay = true;
+    page.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
 

@@ -24,6 +24,7 @@ TEST_CASE("lever arm overlay: the overlay draws the lever arms from both centres
     page.core.add(engine::Circle({200.5, 100.5}, 20, engine::PhysicalAttributes{.mass = 0.0}));
     page.core.add(engine::Circle({238.5, 100.5}, 20)).setVelocity({-60, 0});
     page.window.overlay = true;
+    page.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const engine::PairResponse& response = page.core.physics().responses().at({0, 1});

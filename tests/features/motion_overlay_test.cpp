@@ -20,6 +20,7 @@ TEST_CASE("motion overlay: a velocity arrow half a second long, a spin arc as fa
     ball.setVelocity({60, 0});     // 30 px in 0.5 s: the tip at (330.5, 200.5)
     ball.setAngularVelocity(2.0);  // 1 rad in 0.5 s
     page.window.overlay = true;
+    page.window.overlay_all = true;  // every layer: this one may be an earlier stage's
     page.window.clock.advanceFrame();
     page.core.runGameLoop();
     const browser::Document& document = page.window.document;

@@ -1,6 +1,7 @@
-// A stage with an overlay: --overlay turns it on from the first frame, the key t does
-// the same from a key script (so a recorded live session replays the same pictures),
-// and pressing t again brings back the book's picture exactly.
+// A stage with an overlay: --overlay turns it on from the first frame, its own layer,
+// and --overlay-all every layer; the key t takes it round from a key script (so a
+// recorded live session replays the same pictures): once the stage's own layer, twice
+// every layer, and a third time the book's picture exactly.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -23,22 +24,44 @@ browser::Image finalPicture(const test::ScratchFolder& folder, const std::string
     return browser::read_png(out / "final.png");
 }
 
+// Whether `page` is `book` with the legend's room under it, blank: the page of a run in
+// which the overlay came on and went off again (page.h's Document::legend_room).
+bool bookWithRoom(const browser::Image& page, const browser::Image& book) {
+    if (page.width != book.width || page.height <= book.height) return false;
+    for (int y = 0; y < page.height; ++y) {
+        for (int x = 0; x < page.width; ++x) {
+            if (page.at(x, y) != (y < book.height ? book.at(x, y) : browser::colors::kWhite)) return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
-TEST_CASE("overlay key: --overlay and the key t show the same overlay; t again takes it off") {
+TEST_CASE(
+    "overlay key: t shows the stage's own layer as --overlay does, t again every layer as --overlay-all, "
+    "a third t takes it off") {
     test::ScratchFolder folder("overlay_key");
     // A rectangle and a circle at the cursor (F and G do that on every stage from 3.1).
     const browser::Image book = finalPicture(folder, "book", "--keys \"f g\"");
     const browser::Image option = finalPicture(folder, "option", "--overlay --keys \"f g\"");
+    const browser::Image option_all = finalPicture(folder, "option_all", "--overlay-all --keys \"f g\"");
     const browser::Image key = finalPicture(folder, "key", "--keys \"f g t\"");
     const browser::Image twice = finalPicture(folder, "twice", "--keys \"f g t t@1\"");
+    const browser::Image thrice = finalPicture(folder, "thrice", "--keys \"f g t t@1 t@1\"");
     const browser::Image option_then_key = finalPicture(folder, "option_then_key", "--overlay --keys \"f g t@1\"");
+    const browser::Image all_then_key = finalPicture(folder, "all_then_key", "--overlay-all --keys \"f g t@1\"");
     // the overlay draws something on the default scene
     test::expectEqual("the picture with --overlay differs from the book's: the overlay draws something", true,
                       option.rgba != book.rgba);
     test::expectEqual("the picture after the key T: as with --overlay", true, key.rgba == option.rgba);
-    test::expectEqual("the picture after T twice: the book's again", true, twice.rgba == book.rgba);
-    test::expectEqual("the picture with --overlay and then T: the book's", true, option_then_key.rgba == book.rgba);
+    test::expectEqual("the picture after T twice: as with --overlay-all", true, twice.rgba == option_all.rgba);
+    test::expectEqual("the picture after T three times: the book's again, the legend's room under it blank", true,
+                      bookWithRoom(thrice, book));
+    test::expectEqual("the picture with --overlay and then T: as with --overlay-all", true,
+                      option_then_key.rgba == option_all.rgba);
+    test::expectEqual("the picture with --overlay-all and then T: the book's, the legend's room under it blank", true,
+                      bookWithRoom(all_then_key, book));
 }
 
 }  // namespace overlay_key_test
