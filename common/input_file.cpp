@@ -59,14 +59,15 @@ std::size_t read_some(int fd, const fs::path& file, std::string& text, std::size
 
 }  // namespace
 
-std::string read_whole_file(const fs::path& file, std::size_t most_bytes) {
+std::string read_whole_file(const fs::path& file, std::size_t most_bytes, std::string_view what) {
     const int fd = open_regular(file);
     struct Closer {
         int fd;
         ~Closer() { ::close(fd); }
     } closer{fd};
     const auto too_long = [&] {
-        refuse(file, "longer than " + std::to_string(most_bytes) + " bytes, the most it may hold");
+        refuse(file,
+               "longer than " + std::to_string(most_bytes) + " bytes, the most " + std::string(what) + " may hold");
     };
     struct stat status {};
     if (::fstat(fd, &status) == 0 && status.st_size > static_cast<off_t>(most_bytes)) too_long();

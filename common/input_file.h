@@ -9,11 +9,13 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace browser {
 
-// The whole of `file`, when it is a regular file of at most `most_bytes`.
-std::string read_whole_file(const std::filesystem::path& file, std::size_t most_bytes);
+// The whole of `file`, when it is a regular file of at most `most_bytes`. A longer one
+// is refused as "longer than N bytes, the most <what> may hold".
+std::string read_whole_file(const std::filesystem::path& file, std::size_t most_bytes, std::string_view what = "it");
 
 // A regular file read one line at a time, a buffer's worth of it in memory at once.
 class LineReader {

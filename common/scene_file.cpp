@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstddef>
@@ -17,13 +16,11 @@
 #include <utility>
 #include <variant>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
+#include "input_file.h"
 #include "message_text.h"
+#include "png_io.h"  // FileError
 
 namespace browser {
 
@@ -94,49 +91,15 @@ std::string element_path(const std::string& array, std::size_t index) {
 // ---------------------------------------------------------------------------------------
 // From text to JSON.
 
-// What a scene file may be: a regular file of at most kMaxSceneBytes. Opened without
-// blocking (a FIFO with no writer would wait for ever) and checked with fstat once open
-// (a device, /dev/zero or /dev/urandom, would read without end), then read up to one
-// byte past the limit, so a longer file is refused without reading it all.
+// What a scene file may be: a regular file of at most kMaxSceneBytes, read as every
+// tool reads its input (input_file.h: a FIFO, a device or a folder refused in one line),
+// its refusal a SceneError like every other of the scene's.
 std::string read_text(const fs::path& file) {
-    const auto cannot_read = [&](const std::string& reason) {
-        std::string message = printable(file.string());
-        throw SceneError(message.append(": cannot read: ").append(reason));
-    };
-    const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-    if (fd < 0) {
-        const int error = errno;
-        if (error == ENOENT) cannot_read("no such file");
-        if (error == ELOOP) cannot_read("a loop of symbolic links");
-        cannot_read(std::strerror(error));
+    try {
+        return read_whole_file(file, kMaxSceneBytes, "a scene file");
+    } catch (const FileError& error) {
+        throw SceneError(error.what());
     }
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat status {};
-    if (::fstat(fd, &status) != 0) cannot_read(std::strerror(errno));
-    if (S_ISDIR(status.st_mode)) cannot_read("it is a folder");
-    if (!S_ISREG(status.st_mode)) {
-        cannot_read(S_ISFIFO(status.st_mode)                             ? "it is a FIFO, not a regular file"
-                    : S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) ? "it is a device, not a regular file"
-                                                                         : "it is not a regular file");
-    }
-    const auto too_long = [&] {
-        cannot_read("longer than " + std::to_string(kMaxSceneBytes) + " bytes, the most a scene file may hold");
-    };
-    if (status.st_size > static_cast<off_t>(kMaxSceneBytes)) too_long();
-    std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const ssize_t got = ::read(fd, buffer, sizeof buffer);
-        if (got < 0 && errno == EINTR) continue;
-        if (got < 0) cannot_read(std::strerror(errno));
-        if (got == 0) break;
-        text.append(buffer, static_cast<std::size_t>(got));
-        if (text.size() > kMaxSceneBytes) too_long();  // the file grew while we read it
-    }
-    return text;
 }
 
 // The parser says where it stopped as a count of bytes read, the last of them being the

@@ -373,13 +373,7 @@ TEST_CASE("SIGINT and SIGTERM end the runner by that signal, with no dump and no
         // The stand-in's Z loops for ever: the page is busy when the signal comes.
         const std::string command = "exec " + test::quoted(BOOK_RUNNER) + " " + test::quoted(STANDIN_PROJECT) +
                                     " --keys z@2 --frames 5 --dump " + test::quoted(dump) + " 2>/dev/null";
-        const pid_t pid = ::fork();
-        if (pid == 0) {
-            ::signal(SIGINT, SIG_DFL);
-            ::signal(SIGTERM, SIG_DFL);
-            ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-            ::_exit(127);
-        }
+        const pid_t pid = test::startShell(command);
         const fs::path partial = dump.string() + ".partial-" + std::to_string(pid);
         for (int wait = 0; wait < 2000 && !fs::exists(partial); ++wait) {
             std::this_thread::sleep_for(std::chrono::milliseconds(10));

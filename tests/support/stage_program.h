@@ -69,22 +69,31 @@ inline ProgramRun runStageProgram(const ScratchFolder& folder, const std::string
     return run;
 }
 
-// The program started in the background, as runStageProgram runs it; its process id.
-// Exec'd by the shell, so the id is the program's own and a signal reaches it.
-inline pid_t startStageProgram(const ScratchFolder& folder, const std::string& arguments) {
-    const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
-    std::string command = "exec ";
-    command.append(quoted(STAGE_PROGRAM)).append(" ").append(arguments);
-    command.append(" >").append(quoted(out)).append(" 2>").append(quoted(err));
+// A shell command started in the background; its process id. A command that starts
+// with "exec " makes the id its program's own, so that a signal sent to it reaches the
+// program. own_group puts it in a process group of its own, whose id is the same, so
+// that a test can signal the group as Ctrl-C does.
+inline pid_t startShell(const std::string& command, bool own_group = false) {
     const pid_t pid = ::fork();
     if (pid == 0) {
+        if (own_group) ::setpgid(0, 0);
         // The signals a test sends must reach the program, whatever the test runner ignores.
         ::signal(SIGINT, SIG_DFL);
         ::signal(SIGTERM, SIG_DFL);
         ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
         ::_exit(127);
     }
+    if (own_group) ::setpgid(pid, pid);  // whichever of the two runs first
     return pid;
+}
+
+// The program started in the background, as runStageProgram runs it; its process id.
+inline pid_t startStageProgram(const ScratchFolder& folder, const std::string& arguments) {
+    const std::filesystem::path out = folder.path / "stdout.txt", err = folder.path / "stderr.txt";
+    std::string command = "exec ";
+    command.append(quoted(STAGE_PROGRAM)).append(" ").append(arguments);
+    command.append(" >").append(quoted(out)).append(" 2>").append(quoted(err));
+    return startShell(command);
 }
 
 inline bool isOneLine(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }

@@ -131,16 +131,7 @@ namespace {
 pid_t startCompareRuns(const test::ScratchFolder& folder, const std::string& arguments) {
     const std::string command = "cd " + quoted(folder.path) + " && exec " + quoted(COMPARE_RUNS) + " " +
                                 quoted(STAGE_PROGRAM) + " " + arguments + " >/dev/null 2>err.txt";
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        ::setpgid(0, 0);
-        ::signal(SIGINT, SIG_DFL);
-        ::signal(SIGTERM, SIG_DFL);
-        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    ::setpgid(pid, pid);
-    return pid;
+    return test::startShell(command, /*own_group=*/true);
 }
 
 }  // namespace
