@@ -32,9 +32,10 @@ std::string_view kindName(EventKind kind) {
     return "?";
 }
 
-void ContactEvents::keep(bool on) {
-    kept_ = on;
-    if (on) return;
+void ContactEvents::keep(EventReader reader, bool on) {
+    const auto bit = static_cast<unsigned>(reader);
+    readers_ = on ? readers_ | bit : readers_ & ~bit;
+    if (kept()) return;
     found_.clear();
     touching_.clear();
     events_.clear();
@@ -48,7 +49,7 @@ void ContactEvents::startStep(long step) {
 }
 
 void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
-    if (!kept_) return;
+    if (!kept()) return;
     // The shapes come in list order, which is id order: the normal already points from
     // the smaller id to the larger.
     const Vec2 point = (info.start() + info.end()) * 0.5;
@@ -67,7 +68,7 @@ ContactEvent ContactEvents::eventOf(EventKind kind, const Touch& touch) const {
 }
 
 void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
-    if (!kept_) return;
+    if (!kept()) return;
     const auto by_pair = [](const Touch& x, const Touch& y) { return x.pair < y.pair; };
     const auto same_pair = [](const Touch& x, const Touch& y) { return x.pair == y.pair; };
     // The book's passes report a pair in every pass that finds it: the first report is
@@ -114,7 +115,7 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
 }
 
 void ContactEvents::shapeLeaves(BodyId id) {
-    if (!kept_) return;
+    if (!kept()) return;
     std::erase_if(touching_, [&](const Touch& touch) {
         if (touch.pair.first != id && touch.pair.second != id) return false;
         pending_.push_back(eventOf(EventKind::end, touch));

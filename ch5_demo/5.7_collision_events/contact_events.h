@@ -50,6 +50,10 @@ inline constexpr double kHitSpeed = 10.0;  // px/s
 inline constexpr int kMissedSteps = 3;
 
 enum class EventKind { begin, end, hit };
+
+// Who reads the events: each turns them on and off for itself, and they are kept while
+// any one of them reads (the overlay going off must not silence the --events file).
+enum class EventReader : unsigned { program = 1, game = 2, overlay = 4 };
 std::string_view kindName(EventKind kind);
 
 struct ContactEvent {
@@ -66,8 +70,9 @@ class ContactEvents {
 public:
     // Events cost a little bookkeeping in every step; a world nobody listens to keeps
     // none (and touches nothing either way: the shapes move the same, to the bit).
-    void keep(bool on);
-    bool kept() const { return kept_; }
+    // `reader` starts or stops reading; when the last one stops, the record is dropped.
+    void keep(EventReader reader, bool on);
+    bool kept() const { return readers_ != 0; }
 
     // The step's outline, for the core: the key events since the last step go to the
     // front of the new step's list; the physics reports each pair it finds touching;
@@ -98,7 +103,7 @@ private:
     };
     ContactEvent eventOf(EventKind kind, const Touch& touch) const;
 
-    bool kept_ = false;
+    unsigned readers_ = 0;  // EventReader bits
     long step_ = 0;
     std::vector<Touch> found_;     // this step's reports, a pair as often as a pass finds it
     std::vector<Touch> touching_;  // the pairs touching, by pair

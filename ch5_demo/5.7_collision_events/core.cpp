@@ -120,8 +120,10 @@ void Core::update() {
         }
         physics_.islands().endStep(all_objects_, sub_step);
         if (settings_.remove_out_of_bounds) removeOutOfBounds();
-        physics_.events().endStep(all_objects_, kHitSpeed);
     }
+    // Compared once a step, not once a sub-step: a pair found in any sub-step touches in
+    // this step, and kMissedSteps counts whole steps whatever the sub-steps.
+    physics_.events().endStep(all_objects_, kHitSpeed);
     ++step_count_;
     if (step_listener_) step_listener_();
 }

@@ -115,7 +115,7 @@ public:
 
     // 5.7's collision events (contact_events.h): kept only while someone reads them (the
     // game logic, --events, the overlay). The events of the last step, read after it.
-    void keepEvents(bool keep) { physics_.events().keep(keep); }
+    void keepEvents(bool keep, EventReader reader = EventReader::program) { physics_.events().keep(reader, keep); }
     const ContactEvents& events() const { return physics_.events(); }
     // A key moved, turned or made static the shape at `index`: each pair it touched
     // ends (if it still touches, the next step begins it anew).

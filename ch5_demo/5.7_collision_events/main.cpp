@@ -25,6 +25,8 @@ const browser::StageDefaults kStage{
     .frames = 480,
     .every = 60,
     .gif = true,
+    .extra_options = {{std::string(engine::kEventsOption), "FILE",
+                       "write every collision event (begin, end, hit) to this CSV file: step,kind,id_a,id_b,x,y,nx,ny,speed", ""}},
     // Every key user_control.cpp reacts to, as the README lists them.
     .key_help = {
         {"0-9 up down", "select an object: by its number, the one before, the one after"},

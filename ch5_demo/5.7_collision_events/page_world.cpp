@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "continuous.h"
+#include "number_format.h"
 #include "scene_io.h"
 
 namespace engine {
@@ -28,6 +29,21 @@ constexpr double kGapCost = 8.0;  // pair tests
 constexpr double kSweptPairCost = (kMaxAdvances + kDepthsTried) * kGapCost;
 
 double pairsOf(double shapes) { return shapes * (shapes - 1.0) / 2.0; }
+
+// --events FILE: every collision event of the run, a line each, in the order the step
+// told them (contact_events.h). Numbers carry 17 digits, as the dump's, so that a
+// reader's script may find the very point and speed again.
+constexpr std::string_view kEventsHeader = "step,kind,id_a,id_b,x,y,nx,ny,speed";
+
+void appendEvent(std::string& lines, const ContactEvent& event) {
+    lines.append(std::to_string(event.step)).append(",").append(kindName(event.kind));
+    lines.append(",").append(std::to_string(event.id_a)).append(",").append(std::to_string(event.id_b));
+    for (const double value : {event.point.x, event.point.y, event.normal.x, event.normal.y, event.speed}) {
+        lines += ',';
+        browser::append_round_trip(lines, value);
+    }
+    lines += '\n';
+}
 
 }  // namespace
 
@@ -86,7 +102,15 @@ browser::PageWorld pageWorld(Core& core) {
                     return objects;
                 },
             .on_step = [&core](std::function<void()> listener) { core.onStep(std::move(listener)); },
-            .cost = [&core](const browser::KeyScript& keys) { return worldCost(core, keys); }};
+            .cost = [&core](const browser::KeyScript& keys) { return worldCost(core, keys); },
+            .logs = {{.option = std::string(kEventsOption),
+                      .what = "event list",
+                      .header = std::string(kEventsHeader),
+                      .start = [&core] { core.keepEvents(true); },
+                      .append =
+                          [&core](std::string& lines) {
+                              for (const ContactEvent& event : core.events().events()) appendEvent(lines, event);
+                          }}}};
 }
 
 }  // namespace engine

@@ -9,6 +9,10 @@
 
 namespace engine {
 
+// The option that writes every collision event to a CSV file (5.7), a line each:
+// step,kind,id_a,id_b,x,y,nx,ny,speed.
+inline constexpr std::string_view kEventsOption = "--events";
+
 browser::PageWorld pageWorld(Core& core);
 
 // What a run of the core's world with these key presses may cost at most, counted in

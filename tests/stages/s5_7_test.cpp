@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <map>
+#include <set>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,6 +22,7 @@
 #include "contact_events.h"
 #include "my_game.h"
 #include "rectangle.h"
+#include "stage_program.h"
 #include "world_fixture.h"
 
 namespace s5_7_test {
@@ -329,6 +333,107 @@ TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch
             }
         }
     }
+}
+
+namespace {
+
+// One line of --events FILE: step,kind,id_a,id_b,x,y,nx,ny,speed.
+struct EventRow {
+    long step = 0;
+    std::string kind;
+    engine::BodyId id_a = 0, id_b = 0;
+    double x = 0, y = 0, nx = 0, ny = 0, speed = 0;
+};
+
+std::vector<EventRow> readEvents(const std::filesystem::path& file) {
+    std::istringstream text(test::readText(file));
+    std::string line;
+    std::getline(text, line);
+    REQUIRE(line == "step,kind,id_a,id_b,x,y,nx,ny,speed");
+    std::vector<EventRow> rows;
+    while (std::getline(text, line)) {
+        std::vector<std::string> field;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) field.push_back(cell);
+        INFO(line);
+        REQUIRE(field.size() == 9);
+        const auto number = [](const std::string& cell) {
+            std::size_t used = 0;
+            const double value = std::stod(cell, &used);
+            REQUIRE(used == cell.size());
+            return value;
+        };
+        rows.push_back({std::stol(field[0]), field[1], std::stoull(field[2]), std::stoull(field[3]), number(field[4]),
+                        number(field[5]), number(field[6]), number(field[7]), number(field[8])});
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST_CASE("s5_7: --events FILE writes every event of the run; the shapes move as without it") {
+    const test::ScratchFolder folder("s5_7-events");
+    const std::string run_of = " --frames 420 --every 0 --no-gif --out ";
+    const test::ProgramRun quiet = test::runStageProgram(
+        folder, run_of + test::quoted(folder.path / "quiet") + " --dump " + test::quoted(folder.path / "quiet.csv"));
+    REQUIRE(quiet.status == 0);
+    const test::ProgramRun told = test::runStageProgram(
+        folder, run_of + test::quoted(folder.path / "told") + " --dump " + test::quoted(folder.path / "told.csv") +
+                    " --events " + test::quoted(folder.path / "events.csv") + " --overlay");
+    REQUIRE(told.status == 0);
+    // Reading the events changes nothing in the world: the dumps agree to the bit.
+    CHECK(test::readText(folder.path / "quiet.csv") == test::readText(folder.path / "told.csv"));
+
+    // Every event names two shapes of that step's dump (an end: of the step before, when
+    // the shape has just left the canvas), smaller id first, with a unit normal; a hit
+    // follows its begin, faster than kHitSpeed; per pair begins and ends alternate.
+    std::map<long, std::set<std::uint64_t>> ids_at;
+    for (const test::DumpRow& row : test::readDump(folder.path / "told.csv")) ids_at[row.step].insert(*row.id);
+    std::map<std::pair<engine::BodyId, engine::BodyId>, int> open;
+    std::map<std::string, int> count;
+    const std::vector<EventRow> events = readEvents(folder.path / "events.csv");
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const EventRow& event = events[i];
+        INFO("line " << i + 2 << ": step " << event.step << " " << event.kind << " " << event.id_a << "-"
+                     << event.id_b);
+        ++count[event.kind];
+        REQUIRE(event.id_a < event.id_b);
+        const std::set<std::uint64_t>& present = ids_at[event.kind == "end" ? event.step - 1 : event.step];
+        CHECK(present.count(event.id_a) == 1);
+        CHECK(present.count(event.id_b) == 1);
+        CHECK_THAT(std::hypot(event.nx, event.ny), test::near(1.0, 1e-12));
+        int& state = open[{event.id_a, event.id_b}];
+        if (event.kind == "begin") {
+            REQUIRE(state == 0);
+            state = 1;
+        } else if (event.kind == "end") {
+            REQUIRE(state == 1);
+            state = 0;
+        } else {
+            REQUIRE(event.kind == "hit");
+            REQUIRE(i > 0);
+            CHECK(events[i - 1].kind == "begin");
+            CHECK(events[i - 1].id_a == event.id_a);
+            CHECK(events[i - 1].id_b == event.id_b);
+            CHECK(event.speed > engine::kHitSpeed);
+        }
+    }
+    // The demo's shapes do meet, part and strike: the test can fail.
+    CHECK(count["begin"] > 10);
+    CHECK(count["end"] > 5);
+    CHECK(count["hit"] > 5);
+}
+
+TEST_CASE("s5_7: --events refuses a file another output of the run writes, and writes nothing") {
+    const test::ScratchFolder folder("s5_7-events-refused");
+    const std::string out = " --frames 3 --no-gif --out " + test::quoted(folder.path / "out");
+    test::checkRefused(folder,
+                       "--events " + test::quoted(folder.path / "same.csv") + " --dump " +
+                           test::quoted(folder.path / "same.csv") + out,
+                       "it is also the state dump");
+    test::checkRefused(folder, "--events " + test::quoted(folder.path / "out" / "final.png") + out,
+                       "cannot write event list");
+    test::checkRefused(folder, "--events " + test::quoted(folder.path) + out, "cannot write event list");
 }
 
 }  // namespace s5_7_test
