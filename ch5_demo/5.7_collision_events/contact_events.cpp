@@ -57,6 +57,24 @@ void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const Col
     found_.push_back({{a.id(), b.id()}, point, info.normal(), approach});
 }
 
+void ContactEvents::sensed(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
+    if (a.isSensor() && b.isSensor()) return;
+    touching(a, b, info);
+    if (kept()) found_.back().sensor = true;
+}
+
+void ContactEvents::crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction) {
+    if (!kept()) return;
+    // Named smaller id first, the normal from it to the other: along the motion when
+    // the mover is the first of the pair, against it otherwise.
+    const bool mover_first = mover.id() < sensor.id();
+    const Vec2 normal = mover_first ? direction : direction * -1.0;
+    const RigidShape& a = mover_first ? mover : sensor;
+    const RigidShape& b = mover_first ? sensor : mover;
+    const double approach = -(surfaceVelocity(b, point) - surfaceVelocity(a, point)).dot(normal);
+    found_.push_back({{a.id(), b.id()}, point, normal, approach, 0, true});
+}
+
 ContactEvent ContactEvents::eventOf(EventKind kind, const Touch& touch) const {
     return {.step = step_,
             .kind = kind,
@@ -101,7 +119,7 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
             ++before;
         } else if (before == touching_.end() || found->pair < before->pair) {
             events_.push_back(eventOf(EventKind::begin, *found));
-            if (found->speed > hit_speed) events_.push_back(eventOf(EventKind::hit, *found));
+            if (!found->sensor && found->speed > hit_speed) events_.push_back(eventOf(EventKind::hit, *found));
             now.push_back(*found);
             ++found;
         } else {

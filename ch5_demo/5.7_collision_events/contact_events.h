@@ -39,7 +39,8 @@
 
 namespace engine {
 
-// A begin is also a hit when the pair's surfaces met faster than this along the normal:
+// A begin is also a hit when the pair's surfaces met faster than this along the normal
+// (a pair with a sensor is never hit: nothing strikes a zone):
 // a fall of 2.5 px under the book's gravity (v^2 = 2 g h), so that a shape settling on
 // another, or a pile's jitter (under 5.5's sleep speed, 3 px/s), is no hit.
 inline constexpr double kHitSpeed = 10.0;  // px/s
@@ -81,6 +82,13 @@ public:
     // which a begin is also a hit.
     void startStep(long step);
     void touching(const RigidShape& a, const RigidShape& b, const CollisionInfo& info);
+    // The same for a pair with a sensor in it: told like any touch, but two sensors
+    // never feel each other (zones do not trigger zones).
+    void sensed(const RigidShape& a, const RigidShape& b, const CollisionInfo& info);
+    // A fast shape's sweep (continuous.h) passed through a sensor within the step, at
+    // `point`, moving along `direction`: the pair touched in this step though no look
+    // at the step's end finds it.
+    void crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction);
     void endStep(ShapeList shapes, double hit_speed);
 
     // A key took the shape out of its contacts (removed it, made it static, moved it):
@@ -100,6 +108,7 @@ private:
         Vec2 normal;
         double speed = 0.0;  // approach speed when first found in the step
         int missed = 0;      // steps in a row that have not found it
+        bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
     };
     ContactEvent eventOf(EventKind kind, const Touch& touch) const;
 

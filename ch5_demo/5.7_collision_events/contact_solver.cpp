@@ -141,6 +141,11 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
         if (a.isResting() && b.isResting()) return false;
         const std::optional<CollisionInfo> info = narrowPhase(a, b);
         if (!info) return false;
+        // A sensor only tells what overlaps it (rigid_shape.h): no contact, no island.
+        if (a.isSensor() || b.isSensor()) {
+            events.sensed(a, b, *info);
+            return false;
+        }
         if (islands.touching(shapes, i, j, info->depth())) {
             broad_phase.noteResting();
             woke = true;

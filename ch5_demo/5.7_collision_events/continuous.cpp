@@ -240,6 +240,7 @@ void ContinuousCollision::startStep(ShapeList shapes) {
 
 void ContinuousCollision::sweep(ShapeList shapes) {
     sweeps_.clear();
+    crossings_.clear();
     // A shape that is no bullet is swept against the static shapes alone: they are
     // listed once, so that a world of many fast shapes and few static ones pays for
     // the few.
@@ -249,7 +250,7 @@ void ContinuousCollision::sweep(ShapeList shapes) {
     }
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         RigidShape& shape = *shapes[i];
-        if (shape.isResting()) continue;
+        if (shape.isResting() || shape.isSensor()) continue;  // nothing stops a sensor
         const Pose& start = start_[i];
         const Vec2 offset = shape.center() - start.center;
         const double turn = shape.angle() - start.angle;
@@ -258,9 +259,14 @@ void ContinuousCollision::sweep(ShapeList shapes) {
         const double extent = smallestExtent(shape);
 
         std::optional<double> first;
+        sensors_met_.clear();
         const auto sweepAgainst = [&](std::size_t j) {
             const RigidShape& other = *shapes[j];
             if (j == i || !mayMeet(shape, start.center, shape.center(), other)) return;
+            if (other.isSensor()) {
+                sensors_met_.push_back(j);  // felt, not hit: looked at once the stop is known
+                return;
+            }
             const std::optional<double> impact = impactAgainst(motion, outlineOf(other), extent);
             if (impact && (!first || *impact < *first)) first = impact;
         };
@@ -270,6 +276,14 @@ void ContinuousCollision::sweep(ShapeList shapes) {
             for (std::size_t j : static_) sweepAgainst(j);
         }
         sweeps_.push_back({i, start.center, shape.center(), first});
+        // The sensors the shape reached before anything stopped it.
+        for (const std::size_t j : sensors_met_) {
+            const std::optional<double> enters =
+                timeOfImpact(motion, outlineOf(*shapes[j]), std::min(kImpactDepth, extent / 4));
+            if (enters && (!first || *enters <= *first)) {
+                crossings_.push_back({i, j, start.center + offset * *enters, offset.normalize()});
+            }
+        }
         if (!first) continue;
         // Back to the time of impact: the rest of the step's motion is not made.
         shape.move(start.center + offset * *first - shape.center());

@@ -95,6 +95,16 @@ std::optional<double> timeOfImpact(const StepMotion& motion, const Outline& obst
 // need not be stopped (continuous.cpp says how it goes deeper for a shape in contact).
 std::optional<double> impactAgainst(const StepMotion& motion, const Outline& obstacle, double extent);
 
+// A fast shape whose sweep went through a sensor in the last step (5.7): the sensor
+// feels it even when no look at a step's end finds the two overlapping. `t` is the
+// place of the mover's centre when its outline was first kImpactDepth inside the sensor.
+struct Crossing {
+    std::size_t mover;
+    std::size_t sensor;
+    Vec2 point;      // the mover's centre as it entered
+    Vec2 direction;  // of its motion, a unit vector
+};
+
 // What the sweep did to one fast shape in the last step (the overlay draws it).
 struct Sweep {
     std::size_t index;
@@ -111,8 +121,12 @@ public:
     // back to their time of impact.
     void sweep(ShapeList shapes);
     const std::vector<Sweep>& sweeps() const { return sweeps_; }
+    const std::vector<Crossing>& crossings() const { return crossings_; }
     // For the core, when it takes shapes out of the list.
-    void forgetSweeps() { sweeps_.clear(); }
+    void forgetSweeps() {
+        sweeps_.clear();
+        crossings_.clear();
+    }
 
 private:
     struct Pose {
@@ -122,6 +136,8 @@ private:
     std::vector<Pose> start_;
     std::vector<std::size_t> static_;  // the places of the static shapes, this step
     std::vector<Sweep> sweeps_;
+    std::vector<Crossing> crossings_;
+    std::vector<std::size_t> sensors_met_;  // one shape's sensors on its way, while it is swept
 };
 
 }  // namespace engine

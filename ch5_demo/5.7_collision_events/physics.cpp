@@ -181,6 +181,11 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             if (a.isResting() && b.isResting()) return false;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) return false;
+            // A sensor only tells what overlaps it (rigid_shape.h): no response, no island.
+            if (a.isSensor() || b.isSensor()) {
+                events_.sensed(a, b, *info);
+                return false;
+            }
             if (islands_.touching(shapes, i, j, info->depth())) broad_phase_.noteResting();
             events_.touching(a, b, *info);
             if (last_pass) collisions_.push_back({i, j, *info});

@@ -155,6 +155,12 @@ public:
     bool isBullet() const { return bullet_; }
     void setBullet(bool bullet) { bullet_ = bullet; }
 
+    // A sensor (5.7, contact_events.h) feels what overlaps it and tells it as events,
+    // but takes no part in the collision: nothing bounces off it, is pushed out of it or
+    // rests on it, and it holds no island together. Zones, triggers and goals are sensors.
+    bool isSensor() const { return sensor_; }
+    void setSensor(bool sensor) { sensor_ = sensor; }
+
     double friction() const { return friction_; }
     void setFriction(double friction) { friction_ = friction; }
     double restitution() const { return restitution_; }
@@ -193,6 +199,7 @@ protected:
     double restitution_;
     SleepState sleep_;
     bool bullet_ = false;
+    bool sensor_ = false;
 };
 
 // The world's shapes, as the core keeps them and the physics and its broad phase walk

@@ -126,7 +126,8 @@ std::vector<browser::SceneKey> bodyKeys(BodyDescription& body) {
                              {"angle", body.angle, kAngle},
                              {"velocity", body.velocity, kSpeed},
                              {"angular_velocity", body.angular_velocity, kTurnRate},
-                             {"bullet", body.bullet}});
+                             {"bullet", body.bullet},
+                             {"sensor", body.sensor}});
     return keys;
 }
 
@@ -174,6 +175,7 @@ void buildScene(Core& core, const std::vector<BodyDescription>& bodies) {
         shape.setVelocity(body.velocity);
         shape.setAngularVelocity(body.angular_velocity);
         shape.setBullet(body.bullet);
+        shape.setSensor(body.sensor);
     }
 }
 

@@ -33,6 +33,8 @@ struct BodyDescription {
     double angular_velocity = 0.0;  // rad/s
     // A bullet is also swept against moving shapes, not only static ones (continuous.h).
     bool bullet = false;
+    // A sensor feels overlaps and tells them as events, with no response (contact_events.h).
+    bool sensor = false;
 
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
 };
@@ -65,7 +67,8 @@ inline constexpr browser::SceneFiles<Scene> kSceneFiles{.load = loadScene, .canv
 // Adds the bodies of a scene file, in file order (object 0 is the first body), in
 // place of the book's MyGame scene. Each is built as the book builds a shape, then
 // turned with rotate(angle) and set moving with its velocity and angular velocity; a
-// body with "bullet": true becomes a bullet (continuous.h).
+// body with "bullet": true becomes a bullet (continuous.h), one with "sensor": true a
+// sensor (rigid_shape.h).
 void buildScene(Core& core, const std::vector<BodyDescription>& bodies);
 
 }  // namespace engine

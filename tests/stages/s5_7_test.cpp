@@ -287,6 +287,159 @@ TEST_CASE("s5_7: a pile that falls asleep touching sends no end, and its waking 
     }
 }
 
+namespace {
+
+// A static sensor rectangle (rigid_shape.h: it feels, it takes no part).
+engine::Rectangle& addSensor(test::WorldFixture& page, Vec2 center, double width, double height) {
+    engine::Rectangle& sensor = page.core.add(engine::Rectangle(center, width, height, kStatic));
+    sensor.setSensor(true);
+    return sensor;
+}
+
+}  // namespace
+
+TEST_CASE("s5_7: a sensor feels a falling ball enter and leave, and leaves its fall untouched to the bit") {
+    for (const engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        // The same fall twice: through a sensor zone (y 180 to 220), and with no zone.
+        test::WorldFixture zoned(eventWorld(solver));
+        test::WorldFixture open(eventWorld(solver));
+        zoned.core.keepEvents(true);
+        const engine::Rectangle& zone = addSensor(zoned, {400, 200}, 100, 40);
+        open.core.add(engine::Rectangle({40, 40}, 10, 10, kStatic));  // the ball's id alike in both
+        engine::Circle& ball = zoned.core.add(engine::Circle({400, 100}, 10));
+        engine::Circle& twin = open.core.add(engine::Circle({400, 100}, 10));
+        // The ball's centre before each step (index k: after k updates).
+        std::vector<double> y_before{ball.center().y};
+        std::vector<ContactEvent> told;
+        // 5 s: it falls 250 px, to y = 350, still on the canvas (no floor: nothing else touches it).
+        for (int step = 1; step <= 300; ++step) {
+            zoned.core.update();
+            open.core.update();
+            REQUIRE(ball.center().x == twin.center().x);  // not a bit of difference: no response
+            REQUIRE(ball.center().y == twin.center().y);
+            REQUIRE(ball.velocity().y == twin.velocity().y);
+            y_before.push_back(ball.center().y);
+            for (const ContactEvent& event : zoned.core.events().events()) told.push_back(event);
+        }
+        // The collision pass of step s looks at the ball after s - 1 updates: it overlaps
+        // the zone when its bottom is below 180 and its top above 220.
+        const auto inZone = [&](long s) {
+            const double y = y_before[static_cast<std::size_t>(s - 1)];
+            return y + 10 > 180 && y - 10 < 220;
+        };
+        long first_in = 0, last_in = 0;
+        for (long s = 1; s <= 300; ++s) {
+            if (inZone(s) && first_in == 0) first_in = s;
+            if (inZone(s)) last_in = s;
+        }
+        REQUIRE(first_in > 0);
+        REQUIRE(last_in < 300 - engine::kMissedSteps);  // it left the zone in the run
+        INFO("the ball is in the zone from step " << first_in << " to " << last_in << "; events told: " << told.size());
+        REQUIRE(told.size() == 2);  // a begin, an end, and no hit: nothing strikes a zone
+        CHECK(told[0].kind == EventKind::begin);
+        CHECK(told[0].step == first_in);
+        CHECK(told[0].id_a == zone.id());
+        CHECK(told[0].id_b == ball.id());
+        CHECK(told[1].kind == EventKind::end);
+        CHECK(told[1].step == last_in + engine::kMissedSteps);
+    }
+}
+
+TEST_CASE("s5_7: a sensor feels a box that falls asleep inside it to the end: no end, and no begin on waking (Jolt #277)") {
+    for (const engine::SolverKind solver : kBothSolvers) {
+        INFO("solver " << static_cast<int>(solver));
+        test::WorldFixture page(eventWorld(solver, true));
+        page.core.keepEvents(true);
+        page.core.add(engine::Rectangle({400, 320}, 700, 40, kStatic));
+        addSensor(page, {400, 270}, 200, 60);  // over the floor's middle, from y 240 to 300
+        engine::Rectangle& box = page.core.add(engine::Rectangle({400, 289.5}, 40, 20));
+        long begins = 0, ends = 0;
+        const auto count = [&] {
+            begins += static_cast<long>(ofKind(page.core.events().events(), EventKind::begin).size());
+            ends += static_cast<long>(ofKind(page.core.events().events(), EventKind::end).size());
+        };
+        for (int step = 0; step < 1200 && page.core.awakeCount() > 0; ++step) {
+            page.core.update();
+            count();
+        }
+        REQUIRE(box.sleep().asleep);
+        INFO("pairs touching with the box asleep on the floor in the zone: " << page.core.events().touchingCount());
+        REQUIRE(page.core.events().touchingCount() == 2);  // the floor, and the zone
+        const long begins_asleep = begins;
+        const long ends_asleep = ends;
+        for (int i = 0; i < 300; ++i) {
+            page.core.update();
+            count();
+        }
+        INFO("end events in 5 s of sleep inside the zone: " << ends - ends_asleep << ", none expected");
+        CHECK(ends == ends_asleep);
+        page.core.wakeAll();
+        for (int i = 0; i < 10; ++i) {
+            page.core.update();
+            count();
+        }
+        INFO("after waking: begins " << begins - begins_asleep << ", ends " << ends - ends_asleep << ", none expected");
+        CHECK(begins == begins_asleep);
+        CHECK(ends == ends_asleep);
+        CHECK(page.core.events().touchingCount() == 2);
+    }
+}
+
+TEST_CASE("s5_7: a thin sensor crossed by a fast shape within one step: one begin and one end (Box2D's sensor test)") {
+    for (const engine::SolverKind solver : kBothSolvers) {
+        for (const bool continuous : {true, false}) {
+            INFO("solver " << static_cast<int>(solver) << ", continuous " << continuous);
+            engine::WorldSettings world = eventWorld(solver);
+            world.gravity = {0, 0};
+            world.continuous = continuous;
+            test::WorldFixture page(world);
+            page.core.keepEvents(true);
+            // A 2 px gate at x 399 to 401, and a 2 px ball at 3000 px/s: 50 px a step, its
+            // centre at 125 + 50 k, so no step ever ends with it in the gate.
+            const engine::Rectangle& gate = addSensor(page, {400, 200}, 2, 200);
+            engine::Circle& ball = page.core.add(engine::Circle({125, 200}, 2));
+            ball.setVelocity({3000, 0});
+            std::vector<ContactEvent> told;
+            for (int step = 0; step < 10; ++step) {
+                page.core.update();
+                for (const ContactEvent& event : page.core.events().events()) told.push_back(event);
+            }
+            CHECK(ball.center().x > 500);  // through: a sensor stops nothing, swept or not
+            if (!continuous) {
+                INFO("events with continuous collision off: " << told.size() << " (the ball tunnels, unseen)");
+                CHECK(told.empty());
+                continue;
+            }
+            INFO("events with continuous collision on: " << told.size() << ", a begin and an end expected");
+            REQUIRE(told.size() == 2);
+            CHECK(told[0].kind == EventKind::begin);
+            CHECK(told[1].kind == EventKind::end);
+            CHECK(told[1].step == told[0].step + engine::kMissedSteps);
+            CHECK(told[0].id_a == gate.id());
+            CHECK(told[0].id_b == ball.id());
+            // Where: the ball's centre as its outline was kImpactDepth (0.5 px) into the
+            // gate's near face, x = 399 - 2 + 0.5, to within the sweep's quarter depth.
+            CHECK(std::abs(told[0].point.x - 397.5) <= 0.125 + 1e-9);
+            CHECK(told[0].normal.x == Approx(-1.0));  // from the gate to the ball, against its motion
+        }
+    }
+}
+
+TEST_CASE("s5_7: sensors do not feel each other; a moving sensor falls through a static one untold") {
+    for (const engine::SolverKind solver : kBothSolvers) {
+        test::WorldFixture page(eventWorld(solver));
+        page.core.keepEvents(true);
+        addSensor(page, {400, 200}, 300, 100);
+        engine::Circle& falling = page.core.add(engine::Circle({400, 120}, 20));
+        falling.setSensor(true);
+        page.steps(240);
+        INFO("events between two sensors: " << page.core.events().touchingCount() << " touching");
+        CHECK(page.core.events().touchingCount() == 0);
+        CHECK(falling.center().y > 200);  // it fell on, into and through the other
+    }
+}
+
 TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch now: the book's scene, kicked") {
     for (const engine::SolverKind solver : kBothSolvers) {
         for (const bool sleep : {false, true}) {
@@ -297,6 +450,7 @@ TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch
                 test::WorldFixture page(world, 7);
                 page.core.keepEvents(true);
                 engine::buildScene(page.core, page.random);
+                addSensor(page, {400, 300}, 300, 200);  // a zone (the reset key removes it)
                 std::map<std::pair<engine::BodyId, engine::BodyId>, int> open;  // 1 while a pair touches
                 long begins = 0;
                 long ends = 0;
