@@ -106,8 +106,8 @@ private:
         PairIds pair;
         Vec2 point;
         Vec2 normal;
-        double speed = 0.0;  // approach speed when first found in the step
-        int missed = 0;      // steps in a row that have not found it
+        double speed = 0.0;   // approach speed when first found in the step
+        int missed = 0;       // steps in a row that have not found it
         bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
     };
     ContactEvent eventOf(EventKind kind, const Touch& touch) const;

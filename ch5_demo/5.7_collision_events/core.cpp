@@ -116,8 +116,8 @@ void Core::update() {
         if (settings_.continuous) {
             continuous_.sweep(all_objects_);
             for (const Crossing& crossing : continuous_.crossings()) {
-                physics_.events().crossed(*all_objects_[crossing.mover], *all_objects_[crossing.sensor],
-                                          crossing.point, crossing.direction);
+                physics_.events().crossed(*all_objects_[crossing.mover], *all_objects_[crossing.sensor], crossing.point,
+                                          crossing.direction);
             }
         } else {
             continuous_.forgetSweeps();  // the overlay shows no sweep from before P turned it off

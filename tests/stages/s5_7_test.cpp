@@ -346,7 +346,8 @@ TEST_CASE("s5_7: a sensor feels a falling ball enter and leave, and leaves its f
     }
 }
 
-TEST_CASE("s5_7: a sensor feels a box that falls asleep inside it to the end: no end, and no begin on waking (Jolt #277)") {
+TEST_CASE(
+    "s5_7: a sensor feels a box that falls asleep inside it to the end: no end, and no begin on waking (Jolt #277)") {
     for (const engine::SolverKind solver : kBothSolvers) {
         INFO("solver " << static_cast<int>(solver));
         test::WorldFixture page(eventWorld(solver, true));
@@ -450,7 +451,7 @@ TEST_CASE("s5_7: per pair begins and ends alternate, and begins minus ends touch
                 test::WorldFixture page(world, 7);
                 page.core.keepEvents(true);
                 engine::buildScene(page.core, page.random);
-                addSensor(page, {400, 300}, 300, 200);  // a zone (the reset key removes it)
+                addSensor(page, {400, 300}, 300, 200);                          // a zone (the reset key removes it)
                 std::map<std::pair<engine::BodyId, engine::BodyId>, int> open;  // 1 while a pair touches
                 long begins = 0;
                 long ends = 0;
