@@ -34,8 +34,11 @@ std::string_view kindName(EventKind kind) {
 
 void ContactEvents::keep(EventReader reader, bool on) {
     const auto bit = static_cast<unsigned>(reader);
+    if (on && !kept() && step_ > 0) taking_in_ = true;
     readers_ = on ? readers_ | bit : readers_ & ~bit;
     if (kept()) return;
+    taking_in_ = false;
+    recent_.clear();
     found_.clear();
     touching_.clear();
     events_.clear();
@@ -130,6 +133,13 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
     }
     touching_.swap(now);
     found_.clear();
+    if (taking_in_) {
+        // The first step heard: what touches was touching already (nothing could end).
+        events_.clear();
+        taking_in_ = false;
+    }
+    std::erase_if(recent_, [this](const ContactEvent& event) { return event.step <= step_ - kShownSteps; });
+    recent_.insert(recent_.end(), events_.begin(), events_.end());
 }
 
 void ContactEvents::shapeLeaves(BodyId id) {

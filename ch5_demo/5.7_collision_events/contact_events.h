@@ -50,6 +50,10 @@ inline constexpr double kHitSpeed = 10.0;  // px/s
 // rest closes that in two steps (g dt^2 (1 + 2) = 0.017 px), found again in the third.
 inline constexpr int kMissedSteps = 3;
 
+// How long the overlay shows an event where it happened: half a second of the book's
+// steps, long enough to see, short enough not to pile up.
+inline constexpr long kShownSteps = 30;
+
 enum class EventKind { begin, end, hit };
 
 // Who reads the events: each turns them on and off for itself, and they are kept while
@@ -97,6 +101,10 @@ public:
 
     // What happened in the last step, in order (with the keys' before it).
     const std::vector<ContactEvent>& events() const { return events_; }
+    // What happened in the last kShownSteps steps, oldest first (the overlay's).
+    const std::vector<ContactEvent>& recent() const { return recent_; }
+    // The step the events were last told for.
+    long step() const { return step_; }
     // How many pairs touch now.
     std::size_t touchingCount() const { return touching_.size(); }
 
@@ -113,11 +121,16 @@ private:
     ContactEvent eventOf(EventKind kind, const Touch& touch) const;
 
     unsigned readers_ = 0;  // EventReader bits
+    // A reader who starts listening after steps have run hears of what changes from
+    // then on: the pairs touching already are taken in, in the next step, without a
+    // begin (the overlay turned on with t would otherwise see every resting pair begin).
+    bool taking_in_ = false;
     long step_ = 0;
     std::vector<Touch> found_;     // this step's reports, a pair as often as a pass finds it
     std::vector<Touch> touching_;  // the pairs touching, by pair
     std::vector<ContactEvent> events_;
     std::vector<ContactEvent> pending_;  // the keys' since the last step
+    std::vector<ContactEvent> recent_;
 };
 
 }  // namespace engine

@@ -85,6 +85,28 @@ void Core::keepFirstObjects(std::size_t count) {
     if (selected_ >= all_objects_.size()) selected_ = 0;
 }
 
+bool Core::remove(BodyId id) {
+    const auto found =
+        std::find_if(all_objects_.begin(), all_objects_.end(), [id](const auto& shape) { return shape->id() == id; });
+    if (found == all_objects_.end()) return false;
+    const auto index = static_cast<std::size_t>(found - all_objects_.begin());
+    wakeIslandOf(index);
+    leaveContacts(index);
+    all_objects_.erase(found);
+    // The physics' record and the sweeps name shapes by their places, which moved up.
+    physics_.forgetResponses();
+    continuous_.forgetSweeps();
+    if (selected_ > index) --selected_;  // the same shape stays selected
+    if (selected_ >= all_objects_.size()) selected_ = 0;
+    return true;
+}
+
+void Core::setGame(GameLogic* game) {
+    if (game_) keepEvents(false, EventReader::game);
+    game_ = game;
+    if (game_) keepEvents(true, EventReader::game);
+}
+
 // The book's order (3.1 on): the frame shows the world as it stands, then runs the
 // updates that are due, so each picture shows the state from before that frame's
 // updates. From 4.3 on the book's pass no longer draws the collisions it finds. Last,
@@ -95,6 +117,8 @@ void Core::runGameLoop() {
     draw();
     // What the steps do to each pair is recorded only for the overlay to draw (physics.h).
     physics_.keepResponses(window_.overlay);
+    // And the events, for the overlay's layer of them (events_overlay.h).
+    keepEvents(window_.overlay, EventReader::overlay);
     for (int due = timer_.updatesDue(window_.clock.nowMs()); due > 0; --due) update();
     drawOverlay(window_, *this);
 }
@@ -129,6 +153,8 @@ void Core::update() {
     // this step, and kMissedSteps counts whole steps whatever the sub-steps.
     physics_.events().endStep(all_objects_, kHitSpeed);
     ++step_count_;
+    // The step is over: now the game may read what happened and change the world.
+    if (game_) game_->afterStep(*this);
     if (step_listener_) step_listener_();
 }
 
@@ -205,6 +231,7 @@ void Core::updateUIEcho() {
     beyond +=
         "  Y: Sleeping [On/Off]\n"
         "  P: Continuous [On/Off]\n";
+    if (game_) beyond.append(game_->echo());
     window_.document.beyond_echo = beyond;
 }
 
@@ -212,12 +239,16 @@ void Core::draw() {
     browser::Canvas& context = window_.document.canvas;
     context.clear();
     // A sleeping shape is drawn gray: a reader sees at a glance what the step leaves out.
+    // A sensor is green: it is there, but nothing rests on it. The game may paint the rest.
     for (std::size_t i = 0; i < all_objects_.size(); ++i) {
-        const bool asleep = all_objects_[i]->sleep().asleep;
-        context.setStrokeStyle(i == selected_ ? browser::colors::kRed
-                               : asleep       ? browser::colors::kGray
-                                              : browser::colors::kBlue);
-        all_objects_[i]->draw(context);
+        const RigidShape& shape = *all_objects_[i];
+        const std::optional<browser::Color> painted = game_ ? game_->colourOf(shape) : std::nullopt;
+        context.setStrokeStyle(i == selected_         ? browser::colors::kRed
+                               : shape.sleep().asleep ? browser::colors::kGray
+                               : shape.isSensor()     ? browser::colors::kGreen
+                               : painted              ? *painted
+                                                      : browser::colors::kBlue);
+        shape.draw(context);
     }
 }
 

@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -18,6 +20,23 @@
 #include "world_settings.h"
 
 namespace engine {
+
+class Core;
+
+// 5.7: the game's own logic (the demo's is in my_game.h), which reads the step's events
+// and may change the world: remove a shape, count, paint. The core calls it after each
+// step, once the step is over, never inside it (contact_events.h says why).
+class GameLogic {
+public:
+    virtual ~GameLogic() = default;
+    // After every fixed step, with that step's events in core.events().
+    virtual void afterStep(Core& core) = 0;
+    // The colour the game wants `shape` drawn in, if any (the selected shape stays red,
+    // a sleeping one gray).
+    virtual std::optional<browser::Color> colourOf(const RigidShape& shape) const = 0;
+    // What the game has to say on the page, a line or two for the band beyond the book.
+    virtual std::string echo() const = 0;
+};
 
 // The timing half of the engine loop. Frames come when the browser is ready to draw,
 // and their length varies; the world must still move in equal steps so it behaves the
@@ -62,6 +81,10 @@ public:
     std::size_t objectCount() const { return all_objects_.size(); }
     // Removes every object after the first `count` (the R key's reset).
     void keepFirstObjects(std::size_t count);
+    // Removes the shape with id `id`, if it is still in the world: between two steps,
+    // as the game's logic does (GameLogic). It wakes what it held up and ends every
+    // pair it touched; the shapes after it move up the list. Returns whether it was there.
+    bool remove(BodyId id);
     RigidShape& object(std::size_t index) { return *all_objects_.at(index); }
     const RigidShape& object(std::size_t index) const { return *all_objects_.at(index); }
 
@@ -120,6 +143,9 @@ public:
     // A key moved, turned or made static the shape at `index`: each pair it touched
     // ends (if it still touches, the next step begins it anew).
     void leaveContacts(std::size_t index);
+    // The game's logic, called after every step (nullptr: none, as in the stages before).
+    // It turns on the events it reads; the core does not own it.
+    void setGame(GameLogic* game);
 
 private:
     void toggleSetting(bool WorldSettings::*flag);
@@ -138,6 +164,7 @@ private:
     ContinuousCollision continuous_;
     long step_count_ = 0;
     std::function<void()> step_listener_;
+    GameLogic* game_ = nullptr;
 };
 
 }  // namespace engine

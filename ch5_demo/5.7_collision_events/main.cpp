@@ -3,6 +3,8 @@
 // key press goes to. The stage program (common/stage_main.h) does the rest: the
 // options, --scene and --dump, the run's budget and its exit statuses.
 
+#include <optional>
+
 #include "core.h"
 #include "my_game.h"
 #include "page_world.h"
@@ -13,9 +15,11 @@
 namespace {
 
 // The book's demo with every knob at its default, the book's engine, continuous
-// collision on: 5.6's pictures, since no one reads the events yet. A scene file turns
-// the knobs (docs/scene_format.md). Two seconds in, a box and a ball are thrown from the
-// long slide; at five seconds H kicks every shape.
+// collision on, and the demo's game (my_game.h), which reads the events after every
+// step: a zone on the left floor counts the shapes in it, a shape turns orange at its
+// first contact, and a goal at the bottom right removes what falls into it. A scene
+// file turns the knobs (docs/scene_format.md) and has no game. Two seconds in, a box
+// and a ball are thrown from the long slide; at five seconds H kicks every shape.
 // A table, an option or a key a line, which the layout would re-wrap:
 // clang-format off
 const browser::StageDefaults kStage{
@@ -46,7 +50,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "each fast shape's sweep and where it stopped, and how many were swept (--overlay-all: the grid, the islands, chapter 3's and 4's layers, the contacts too)",
+    .overlay = "each collision event where it happened for half a second, begin, end and hit, with their counts (--overlay-all: the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
 };
 // clang-format on
 
@@ -57,7 +61,9 @@ public:
         if (scene) {
             engine::buildScene(core_, scene->bodies);
         } else {
-            engine::buildScene(core_, random);
+            // The book's demo, with the game that reads its events (my_game.h).
+            game_.emplace(core_, random);
+            core_.setGame(&*game_);
         }
     }
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
@@ -67,6 +73,7 @@ public:
 private:
     engine::Core core_;
     engine::UserControl control_;
+    std::optional<engine::DemoGame> game_;  // the demo's only: a scene file has none
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "my_game.h"
 
+#include <algorithm>
+
 #include "circle.h"
 #include "rectangle.h"
 
@@ -36,12 +38,18 @@ Vec2 randomVelocity(browser::Random& random) {
 }
 }  // namespace
 
-void buildScene(Core& core, browser::Random& random) {
+namespace {
+
+// The book's four platforms, objects 0 to 3.
+void addPlatforms(Core& core) {
     core.add(Rectangle({500, 200}, 400, 20, {.mass = 0, .friction = 0.3, .restitution = 0})).rotate(2.8);
     core.add(Rectangle({200, 400}, 400, 20, {.mass = 0, .friction = 1, .restitution = 0.5}));
     core.add(Rectangle({100, 200}, 200, 20, {.mass = 0}));
     core.add(Rectangle({10, 360}, 20, 100, {.mass = 0, .friction = 0, .restitution = 1}));
+}
 
+// The book's ten rectangles and ten circles.
+void addRandomShapes(Core& core, browser::Random& random) {
     // Every random number is drawn in the order the book's constructor calls take them:
     // place, size, attributes, then the velocity set after construction.
     for (int i = 0; i < kShapePairs; ++i) {
@@ -56,6 +64,79 @@ void buildScene(Core& core, browser::Random& random) {
         const PhysicalAttributes ball_attributes = randomAttributes(random);
         core.add(Circle(ball_place, radius, ball_attributes)).setVelocity(randomVelocity(random));
     }
+}
+
+// The game's two sensors, static: the zone lies on the left floor (its top at y = 390)
+// and reaches 60 px above it; the goal spans the bottom right, where shapes leave the
+// long slide and fall off the canvas.
+constexpr Vec2 kZoneCenter{200, 360};
+constexpr double kZoneWidth = 400, kZoneHeight = 60;
+constexpr Vec2 kGoalCenter{620, 425};
+constexpr double kGoalWidth = 300, kGoalHeight = 40;
+
+BodyId addSensor(Core& core, Vec2 center, double width, double height) {
+    Rectangle& sensor = core.add(Rectangle(center, width, height, {.mass = 0}));
+    sensor.setSensor(true);
+    return sensor.id();
+}
+
+void insertSorted(std::vector<BodyId>& ids, BodyId id) {
+    const auto place = std::lower_bound(ids.begin(), ids.end(), id);
+    if (place == ids.end() || *place != id) ids.insert(place, id);
+}
+
+void eraseSorted(std::vector<BodyId>& ids, BodyId id) {
+    const auto place = std::lower_bound(ids.begin(), ids.end(), id);
+    if (place != ids.end() && *place == id) ids.erase(place);
+}
+
+bool containsSorted(const std::vector<BodyId>& ids, BodyId id) {
+    return std::binary_search(ids.begin(), ids.end(), id);
+}
+
+}  // namespace
+
+void buildScene(Core& core, browser::Random& random) {
+    addPlatforms(core);
+    addRandomShapes(core, random);
+}
+
+DemoGame::DemoGame(Core& core, browser::Random& random) {
+    addPlatforms(core);
+    zone_ = addSensor(core, kZoneCenter, kZoneWidth, kZoneHeight);
+    goal_ = addSensor(core, kGoalCenter, kGoalWidth, kGoalHeight);
+    addRandomShapes(core, random);
+}
+
+void DemoGame::afterStep(Core& core) {
+    std::vector<BodyId> scoring;
+    for (const ContactEvent& event : core.events().events()) {
+        const bool zone = event.id_a == zone_ || event.id_b == zone_;
+        const bool goal = event.id_a == goal_ || event.id_b == goal_;
+        const BodyId other = event.id_a == zone_ || event.id_a == goal_ ? event.id_b : event.id_a;
+        if (event.kind == EventKind::begin && !zone && !goal) {
+            insertSorted(touched_, event.id_a);
+            insertSorted(touched_, event.id_b);
+        }
+        if (zone && event.kind == EventKind::begin) insertSorted(inside_, other);
+        if (zone && event.kind == EventKind::end) eraseSorted(inside_, other);
+        if (goal && event.kind == EventKind::begin) scoring.push_back(other);
+    }
+    // Removed only now, after the loop over the list: removing changes the world the
+    // events describe, and each removal tells its own ends with the next step's events.
+    for (const BodyId id : scoring) {
+        if (core.remove(id)) ++scored_;
+    }
+}
+
+std::optional<browser::Color> DemoGame::colourOf(const RigidShape& shape) const {
+    // The platforms keep the book's blue: only what moves shows it has met something.
+    if (!shape.isStatic() && containsSorted(touched_, shape.id())) return browser::colors::kOrange;
+    return std::nullopt;
+}
+
+std::string DemoGame::echo() const {
+    return "  Zone: " + std::to_string(inside_.size()) + " inside, Goal: " + std::to_string(scored_) + " scored\n";
 }
 
 }  // namespace engine

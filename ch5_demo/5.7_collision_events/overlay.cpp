@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contact_overlay.h"
+#include "events_overlay.h"
 #include "grid_overlay.h"
 #include "islands_overlay.h"
 #include "overlay_draw.h"
@@ -173,8 +174,8 @@ void drawOverlay(browser::Window& window, const Core& core) {
     legend.clear();
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    // 5.6's own layer is the sweeps (continuous.h). Every layer adds the grid, 5.5's
-    // islands, chapter 3's and 4's layers, and 5.4's contacts.
+    // 5.7's own layer is the events (events_overlay.h). Every layer adds the grid, 5.5's
+    // islands, chapter 3's and 4's layers, 5.4's contacts and 5.6's sweeps.
     const bool all = window.overlay_all;
     if (all) {
         drawGrid(sheet.canvas, core, legend);
@@ -185,8 +186,9 @@ void drawOverlay(browser::Window& window, const Core& core) {
         drawImpulses(sheet, core);
         drawLeverArms(sheet, core);
         drawContacts(sheet.canvas, core, legend);
+        drawSweeps(sheet, core);
     }
-    drawSweeps(sheet, core);
+    drawEvents(sheet.canvas, sheet.labels, core, legend);
 }
 
 }  // namespace engine

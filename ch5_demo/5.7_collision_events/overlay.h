@@ -46,6 +46,9 @@
 //
 // 5.6's continuous collision adds the sweeps (continuous.h): each fast shape's
 // path in the last step, and where the sweep stopped it.
+//
+// 5.7's collision events add their own (events_overlay.h): each begin, end and hit
+// where it happened, for half a second, and their counts.
 
 #include "browser.h"
 #include "core.h"
