@@ -40,7 +40,7 @@ void appendEvent(std::string& lines, const ContactEvent& event) {
     lines.append(",").append(std::to_string(event.id_a)).append(",").append(std::to_string(event.id_b));
     for (const double value : {event.point.x, event.point.y, event.normal.x, event.normal.y, event.speed}) {
         lines += ',';
-        browser::append_round_trip(lines, value);
+        browser::append_round_trip(lines, value + 0.0);  // + 0.0: a normal's -0 reads as 0
     }
     lines += '\n';
 }
