@@ -86,8 +86,8 @@ void checkEvents(const engine::Core& core, EventTally& tally) {
                 --tally.open;
                 break;
             case engine::EventKind::hit:
-                fuzz::require(i > 0 && events[i - 1].kind == engine::EventKind::begin && events[i - 1].id_a == event.id_a &&
-                                  events[i - 1].id_b == event.id_b,
+                fuzz::require(i > 0 && events[i - 1].kind == engine::EventKind::begin &&
+                                  events[i - 1].id_a == event.id_a && events[i - 1].id_b == event.id_b,
                               "a hit follows its begin");
                 break;
         }
