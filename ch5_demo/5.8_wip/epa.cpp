@@ -9,14 +9,15 @@
 //
 // The start. GJK ends on whatever simplex held the origin, and it is not always a
 // triangle around it: two points with the origin on the segment between them (shapes
-// whose outlines cross at a corner), a single point (shapes that touch at a corner), or
-// three points on one line, whose "triangle" has no inside and no outward normals. EPA
-// started on those divides by a side of length zero or takes a normal that points
-// nowhere (fcl #395 and Jolt #660 are such reports). So the start is made a proper
-// triangle first: a point gains the support point towards the origin, a segment the
-// support point square to it, on whichever side A - B reaches out, and a flat triangle
-// is first cut to its longest segment. The origin may lie on the triangle's outline,
-// which is fine: its side then has distance 0 and is the first to be pushed out.
+// whose outlines cross at a corner), or a single point (shapes that touch at a corner).
+// A triangle of three points on one line would have no inside and no outward normals,
+// and EPA started on any of these divides by a side of length zero or takes a normal
+// that points nowhere (fcl #395 and Jolt #660 are such reports). GJK never ends on a
+// flat triangle (gjk.cpp cuts one to a segment), and the start is made a proper triangle
+// here: a point gains the support point towards the origin, a segment the support point
+// square to it, on whichever side A - B reaches out. The origin may lie on the
+// triangle's outline, which is fine: its side then has distance 0 and is the first to be
+// pushed out.
 //
 // Kept convex. A new point can stand outside a neighbouring side's line too, and then
 // the corner between them is no longer a corner. Such a corner is dropped, so the
@@ -61,13 +62,6 @@ public:
         --count_;
     }
     void swap(std::size_t i, std::size_t j) { std::swap(corners_[i], corners_[j]); }
-    void keepOnly(std::size_t i, std::size_t j) {
-        const SimplexVertex first = corners_[i];
-        const SimplexVertex second = corners_[j];
-        corners_[0] = first;
-        corners_[1] = second;
-        count_ = 2;
-    }
 
 private:
     std::array<SimplexVertex, kMaxPolytopeCorners> corners_{};
@@ -88,14 +82,6 @@ double offSide(Vec2 point, Vec2 from, Vec2 to) { return (to - from).cross(point 
 // The start (the file's header): GJK's simplex made a triangle, counter-clockwise. False
 // when A - B has no area (both cores points or segments on one line).
 bool startTriangle(Polytope& polygon, const Difference& difference) {
-    if (polygon.size() == 3 && std::abs(offSide(polygon[2].w, polygon[0].w, polygon[1].w)) <= difference.flat) {
-        const double d01 = polygon[0].w.distance(polygon[1].w);
-        const double d02 = polygon[0].w.distance(polygon[2].w);
-        const double d12 = polygon[1].w.distance(polygon[2].w);
-        if (d01 >= d02 && d01 >= d12) polygon.keepOnly(0, 1);
-        else if (d02 >= d12) polygon.keepOnly(0, 2);
-        else polygon.keepOnly(1, 2);
-    }
     if (polygon.size() == 1) {
         const Vec2 w = polygon[0].w;
         for (Vec2 direction : {-w, Vec2{1.0, 0.0}, Vec2{-1.0, 0.0}}) {
@@ -156,13 +142,13 @@ void insertConvex(Polytope& polygon, std::size_t side, const SimplexVertex& v) {
     }
 }
 
-Penetration answerFrom(const Polytope& polygon, const Side& side, Vec2 origin, int iterations, bool converged) {
+EpaPenetration answerFrom(const Polytope& polygon, const Side& side, Vec2 origin, int iterations, bool converged) {
     const SimplexVertex& from = polygon[side.index];
     const SimplexVertex& to = polygon[side.index + 1];
     // The foot of the perpendicular from the origin on the side, as a share of the way.
     const Vec2 edge = to.w - from.w;
     const double t = std::clamp(-from.w.dot(edge) / edge.dot(edge), 0.0, 1.0);
-    Penetration answer;
+    EpaPenetration answer;
     answer.depth = std::max(0.0, side.distance);
     answer.normal = side.normal;
     answer.point_a = from.a + (to.a - from.a) * t + origin;
@@ -174,7 +160,7 @@ Penetration answerFrom(const Polytope& polygon, const Side& side, Vec2 origin, i
 
 }  // namespace
 
-std::optional<Penetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b) {
+std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b) {
     ConvexProxy core_a = a;
     ConvexProxy core_b = b;
     core_a.radius = 0.0;
@@ -194,7 +180,7 @@ std::optional<Penetration> epaPenetration(const ConvexProxy& a, const ConvexProx
     }
     if (!startTriangle(polygon, difference)) {
         // A - B is a point or a segment: no area, no depth, no normal worth the name.
-        Penetration flat;
+        EpaPenetration flat;
         flat.point_a = gjk.point_a;
         flat.point_b = gjk.point_b;
         flat.converged = false;

@@ -31,7 +31,7 @@ inline constexpr int kMaxEpaIterations = 32;
 // The depth found is then within this of the true depth (the proof is in epa.cpp).
 inline constexpr double kEpaRelativeTolerance = 1e-12;
 
-struct Penetration {
+struct EpaPenetration {
     double depth = 0.0;  // px, >= 0; 0 when the cores only touch
     Vec2 normal;         // unit, from A towards B: moving B by depth * normal parts them
     Vec2 point_a;        // A's deepest point into B along the normal (the witness on A)
@@ -42,6 +42,6 @@ struct Penetration {
 
 // The penetration of the cores of two proxies (radii are not counted); nothing when
 // they are apart (GJK's distance > 0).
-std::optional<Penetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b);
+std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b);
 
 }  // namespace engine

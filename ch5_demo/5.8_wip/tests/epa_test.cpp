@@ -68,7 +68,7 @@ TEST_CASE("epa: 10,000 random overlapping polygon pairs, depth within 1e-9 px of
 }
 
 // Two equal w x w squares, B moved by `offset` from A: the depth is known by hand.
-std::optional<engine::Penetration> squares(double w, Vec2 offset) {
+std::optional<engine::EpaPenetration> squares(double w, Vec2 offset) {
     const std::vector<Vec2> a{{0, 0}, {w, 0}, {w, w}, {0, w}};
     std::vector<Vec2> b;
     for (Vec2 p : a) b.push_back(p + offset);

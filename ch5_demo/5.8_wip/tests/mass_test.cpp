@@ -25,6 +25,19 @@ TEST_CASE("polygon mass: a triangle's area, centroid and (a^2 + b^2 + c^2) / 36"
     CHECK_THAT(mass.inertia_per_mass, test::near(50.0 / 36, 1e-13));
 }
 
+TEST_CASE("polygon mass: a house-shaped pentagon, whose centroid is not its corners' average", "[polygons]") {
+    // A 2 x 2 square with a triangle of height 1 on one side: the fan's reference point
+    // (the corners' average, y = 7/5) is not the centroid, so the parallel axis rule is
+    // used. Worked out from the two pieces: area 4 + 1; centroid y (4 x 1 + 1 x 7/3) / 5 =
+    // 19/15; moment about it (square: 4 x 8/12 + 4 (4/15)^2; triangle: 1 x (4 + 2 + 2)/36 +
+    // 1 x (16/15)^2) = 970/225, per unit mass 194/225.
+    const std::vector<Vec2> house{{0, 0}, {2, 0}, {2, 2}, {1, 3}, {0, 2}};
+    const auto mass = polygonMass(house);
+    CHECK_THAT(mass.area, test::near(5.0, 1e-14));
+    CHECK_THAT(mass.centroid, test::near(Vec2{1, 19.0 / 15}, 1e-14));
+    CHECK_THAT(mass.inertia_per_mass, test::near(194.0 / 225, 1e-14));
+}
+
 TEST_CASE("polygon mass: regular n-gons, 3 to 8 sides, against R^2 (2 + cos(2 pi / n)) / 6", "[polygons]") {
     // For n sides on a circle of radius R: area n R^2 sin(2 pi / n) / 2; centroid the
     // circle's centre; moment per unit mass R^2 (2 + cos(2 pi / n)) / 6, which is the
