@@ -31,12 +31,7 @@ TEST_CASE("epa: 10,000 random overlapping polygon pairs, depth within 1e-9 px of
     int pairs = 0;
     int ties = 0;
     while (pairs < 10000) {
-        std::vector<Vec2> shapes[2];
-        for (auto& shape : shapes) {
-            const std::size_t count = 3 + static_cast<std::size_t>(random.next() * 6);
-            shape =
-                test::randomConvex(random, count, Vec2{60 * random.next(), 60 * random.next()}, 5 + 60 * random.next());
-        }
+        const std::vector<Vec2> shapes[2]{test::randomPolygon(random, 60, 60), test::randomPolygon(random, 60, 60)};
         const auto a = engine::makeConvexPolygon(shapes[0]);
         const auto b = engine::makeConvexPolygon(shapes[1]);
         const auto sat = engine::satCollision(a, b);
@@ -68,19 +63,26 @@ TEST_CASE("epa: 10,000 random overlapping polygon pairs, depth within 1e-9 px of
 }
 
 // Two equal w x w squares, B moved by `offset` from A: the depth is known by hand.
+std::vector<Vec2> square(double w, Vec2 offset) {
+    std::vector<Vec2> corners{{0, 0}, {w, 0}, {w, w}, {0, w}};
+    for (Vec2& p : corners) p = p + offset;
+    return corners;
+}
 std::optional<engine::EpaPenetration> squares(double w, Vec2 offset) {
-    const std::vector<Vec2> a{{0, 0}, {w, 0}, {w, w}, {0, w}};
-    std::vector<Vec2> b;
-    for (Vec2 p : a) b.push_back(p + offset);
-    return epaPenetration(makeProxy(a), makeProxy(b));
+    return epaPenetration(makeProxy(square(w, Vec2{})), makeProxy(square(w, offset)));
+}
+// The simplex GJK ends on, which EPA starts from: fewer than 3 points is a degenerate start.
+std::size_t gjkEnd(double w, Vec2 offset) {
+    return engine::gjkDistance(makeProxy(square(w, Vec2{})), makeProxy(square(w, offset))).simplex.count;
 }
 
 TEST_CASE("epa: degenerate starts: the origin on a side, collinear support points, shapes that only touch",
           "[polygons]") {
     SECTION("squares slid along an axis: depth w - |dx|, normal along the axis") {
-        // Symmetric pairs: GJK's support points come in equal pairs and lie on lines
-        // through the origin.
+        // Symmetric pairs: GJK's support points lie on a line through the origin, and it
+        // ends on a segment with the origin on it, which EPA must make a triangle.
         for (double dx : {-9.0, -5.0, -1.0, 0.5, 3.0, 7.5}) {
+            CHECK(gjkEnd(10, Vec2{dx, 0}) == 2);
             const auto p = squares(10, Vec2{dx, 0});
             REQUIRE(p);
             CHECK(p->converged);
@@ -88,13 +90,15 @@ TEST_CASE("epa: degenerate starts: the origin on a side, collinear support point
             CHECK_THAT(p->normal, test::near(Vec2{dx > 0 ? 1.0 : -1.0, 0}, 1e-15));
         }
     }
-    SECTION("one square on the other: depth w along an axis") {
+    SECTION("one square on the other: depth w along an axis (GJK ends on one point, the origin)") {
+        CHECK(gjkEnd(10, Vec2{0, 0}) == 1);
         const auto p = squares(10, Vec2{0, 0});
         REQUIRE(p);
         CHECK_THAT(p->depth, test::near(10.0, 1e-12));
         CHECK_THAT(std::abs(p->normal.x) + std::abs(p->normal.y), test::near(1.0, 1e-15));
     }
     SECTION("slid along the diagonal: depth w - d along either axis") {
+        CHECK(gjkEnd(10, Vec2{4, 4}) == 2);
         const auto p = squares(10, Vec2{4, 4});
         REQUIRE(p);
         CHECK_THAT(p->depth, test::near(6.0, 1e-12));

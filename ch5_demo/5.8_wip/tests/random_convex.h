@@ -45,6 +45,14 @@ inline std::vector<Vec2> randomConvex(browser::Random& random, std::size_t count
     return points;
 }
 
+// A random convex polygon of 3 to 8 corners, its centre anywhere in a `spread` x `spread`
+// square, its size between 5 px and 5 + `most_size` px.
+inline std::vector<Vec2> randomPolygon(browser::Random& random, double spread, double most_size) {
+    const std::size_t count = 3 + static_cast<std::size_t>(random.next() * 6);
+    const Vec2 center{spread * random.next(), spread * random.next()};
+    return randomConvex(random, count, center, 5 + most_size * random.next());
+}
+
 inline double pointSegmentDistance(Vec2 p, Vec2 from, Vec2 to) {
     const Vec2 edge = to - from;
     const double length2 = edge.dot(edge);

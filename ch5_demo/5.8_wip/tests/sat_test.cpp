@@ -123,12 +123,7 @@ TEST_CASE("polygon sat: random pairs, SAT's depth is the exact one and the conta
     browser::Random random(3);
     int overlapping = 0;
     for (int trial = 0; trial < 2000; ++trial) {
-        std::vector<Vec2> shapes[2];
-        for (auto& shape : shapes) {
-            const std::size_t count = 3 + static_cast<std::size_t>(random.next() * 6);
-            shape =
-                test::randomConvex(random, count, Vec2{80 * random.next(), 80 * random.next()}, 5 + 40 * random.next());
-        }
+        const std::vector<Vec2> shapes[2]{test::randomPolygon(random, 80, 40), test::randomPolygon(random, 80, 40)};
         const auto a = engine::makeConvexPolygon(shapes[0]);
         const auto b = engine::makeConvexPolygon(shapes[1]);
         const auto hit = engine::satCollision(a, b);
