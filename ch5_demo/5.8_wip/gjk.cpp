@@ -281,6 +281,7 @@ SimplexVertex supportOfDifference(const ConvexProxy& a, const ConvexProxy& b, Ve
 DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const SimplexCache& start) {
     const Vec2 origin = a.points[0];
     const LocalShapes shapes = localShapes(a, b, origin);
+    // Never less than 1e-13 px: shapes far smaller than a pixel still round off at that.
     const double touching = kRoundOff * std::max(shapes.size, 1.0);
     Simplex simplex = simplexFrom(start, shapes);
     int iterations = 0;
