@@ -24,7 +24,7 @@
 // when it failed otherwise (3: a number that is not finite); 130 or 143 when SIGINT or
 // SIGTERM ended it (the runs are stopped, nothing is written, an old DIR stays as it was).
 // The scene is read as the stage programs read one (docs/scene_format.md: a regular file
-// of at most 2 MiB, nested at most four levels deep), a setting likewise.
+// of at most 2 MiB, nested at most five levels deep), a setting likewise.
 
 #include <fcntl.h>
 #include <signal.h>

@@ -184,7 +184,7 @@ private:
     bool open(bool is_array) {
         if (open_.size() == kMaxNesting) {
             refusal = Refusal{path(), "nested deeper than a scene can use (" + std::to_string(kMaxNesting) +
-                                          " levels: {\"list\": [{\"key\": [x, y]}]})"};
+                                          " levels: {\"list\": [{\"key\": [[x, y]]}]})"};
             return false;
         }
         open_.push_back(Container{.is_array = is_array});
@@ -226,6 +226,22 @@ double number(const json& value, const std::string& path, const NumberRule& rule
 Vec2 vector(const json& value, const std::string& path, const NumberRule& rule) {
     if (!value.is_array() || value.size() != 2) refuse_value(path, "must be an array of two numbers [x, y]", value);
     return Vec2{number(value[0], element_path(path, 0), rule), number(value[1], element_path(path, 1), rule)};
+}
+
+// A list of points: the right number of [x, y], then the stage's check of them together.
+std::vector<Vec2> points(const json& value, const std::string& path, const NumberRule& rule,
+                         const PointsRule& shape) {
+    const std::string many = "must be an array of " + std::to_string(shape.fewest) + " to " +
+                             std::to_string(shape.most) + " points [[x, y], ...]";
+    if (!value.is_array() || value.size() < shape.fewest || value.size() > shape.most) {
+        refuse_value(path, many, value);
+    }
+    std::vector<Vec2> read;
+    for (std::size_t i = 0; i < value.size(); ++i) read.push_back(vector(value[i], element_path(path, i), rule));
+    if (shape.check) {
+        if (const std::optional<std::string> problem = shape.check(read)) refuse(path, *problem);
+    }
+    return read;
 }
 
 bool flag(const json& value, const std::string& path) {
@@ -286,6 +302,10 @@ Assignment read_key(const SceneKey& key, const json& value, const std::string& p
                 return [setting = target.setting, v = flag(value, path)] { *setting = v; };
             } else if constexpr (std::is_same_v<Target, SceneKey::Vector>) {
                 return [setting = target.setting, v = vector(value, path, target.rule)] { *setting = v; };
+            } else if constexpr (std::is_same_v<Target, SceneKey::Points>) {
+                return [setting = target.setting, v = points(value, path, target.rule, target.points)] {
+                    *setting = v;
+                };
             } else {
                 return [choose = target.choose, i = word(value, path, target.spellings)] { choose(i); };
             }
@@ -443,6 +463,16 @@ KeyDescription describe(const SceneKey& key) {
                 description.values = "[x, y], each " + values_of(target.rule);
                 description.value_now =
                     "[" + number_json(target.setting->x) + ", " + number_json(target.setting->y) + "]";
+            } else if constexpr (std::is_same_v<Target, SceneKey::Points>) {
+                description.values = std::to_string(target.points.fewest) + " to " +
+                                     std::to_string(target.points.most) + " points [[x, y], ...], each " +
+                                     values_of(target.rule);
+                std::string now = "[";
+                for (const Vec2 point : *target.setting) {
+                    if (now.size() > 1) now.append(", ");
+                    now.append("[").append(number_json(point.x)).append(", ").append(number_json(point.y)).append("]");
+                }
+                description.value_now = now.append("]");
             } else {
                 description.values = choices(target.spellings);
                 if (const auto now = target.now())

@@ -39,10 +39,10 @@ struct NumberRule {
 
 // How much a scene file may hold, so that reading it fits in memory and ends: 2 MiB
 // of text (a stage's own limit on its lists keeps a run within its budget), nested no
-// deeper than the deepest value a scene has, a pair of numbers in an element of a list,
-// {"list": [{"key": [x, y]}]}: four levels.
+// deeper than the deepest value a scene has, a list of points in an element of a list,
+// {"list": [{"key": [[x, y]]}]}: five levels (a polygon's corners, from 5.8).
 inline constexpr std::size_t kMaxSceneBytes = 2 << 20;  // 2 MiB
-inline constexpr std::size_t kMaxNesting = 4;
+inline constexpr std::size_t kMaxNesting = 5;
 
 // Rules any stage may use; a stage writes its own for its own keys (its scene_io.cpp:
 // the engine's quantities are the engine's to bound). No number of an accepted scene
@@ -65,6 +65,15 @@ inline constexpr NumberRule kCanvasSize{[](double v) { return v > 0.0 && v <= 40
 enum class Presence { optional, required };
 inline constexpr Presence kRequired = Presence::required;
 
+// A list of points, [[x, y], ...]: how many it may hold, and a check of the whole list
+// that the stage makes (what the points must be together), which answers with its
+// refusal, the problem's words, or nothing when the list is good.
+struct PointsRule {
+    std::size_t fewest = 1;
+    std::size_t most = 1;
+    std::function<std::optional<std::string>(std::span<const lib::Vec2>)> check;
+};
+
 // One key that a stage reads, bound to the setting it fills: a key of the "world"
 // object, bound to one of the stage's settings, or a key of a list's element, bound to a
 // member of the stage's description of that element:
@@ -85,6 +94,10 @@ public:
     SceneKey(std::string_view name, lib::Vec2& setting, NumberRule rule = rules::kFinite,
              Presence presence = Presence::optional)
         : name_(name), presence_(presence), target_(Vector{&setting, rule}) {}
+    // A list of points, each [x, y] with both numbers under `rule`.
+    SceneKey(std::string_view name, std::vector<lib::Vec2>& setting, NumberRule rule, PointsRule points,
+             Presence presence = Presence::optional)
+        : name_(name), presence_(presence), target_(Points{&setting, rule, std::move(points)}) {}
     // One word from a fixed list, each naming a value of the setting's enum.
     template <class Enum>
     requires std::is_enum_v<Enum> SceneKey(std::string_view name, Enum& setting,
@@ -109,6 +122,11 @@ public:
         lib::Vec2* setting;
         NumberRule rule;
     };
+    struct Points {
+        std::vector<lib::Vec2>* setting;
+        NumberRule rule;
+        PointsRule points;
+    };
     struct Word {
         std::vector<std::string_view> spellings;
         std::function<void(std::size_t)> choose;          // sets the setting to the i-th word's value
@@ -117,7 +135,7 @@ public:
 
     std::string_view name() const { return name_; }
     bool required() const { return presence_ == Presence::required; }
-    const std::variant<Number, Count, Flag, Vector, Word>& target() const { return target_; }
+    const std::variant<Number, Count, Flag, Vector, Points, Word>& target() const { return target_; }
 
 private:
     template <class Enum>
@@ -144,7 +162,7 @@ private:
 
     std::string_view name_;
     Presence presence_;
-    std::variant<Number, Count, Flag, Vector, Word> target_;
+    std::variant<Number, Count, Flag, Vector, Points, Word> target_;
 };
 
 // A list a scene may hold, such as a stage's bodies: each element an object whose

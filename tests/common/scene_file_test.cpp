@@ -479,11 +479,12 @@ TEST_CASE("scene_file: nesting deeper than a scene can use is refused at the fir
     const std::size_t depth = 100'000;
     const fs::path file = folder.write(
         "deep.json", std::string(R"({"world": {"gravity": )").append(depth, '[').append(depth, ']').append("}}"));
-    CHECK(refusal(file) == file.string() + R"(: world.gravity[0][0]: nested deeper than a scene can use (4 levels: )"
-                                           R"({"list": [{"key": [x, y]}]}))");
-    // Four levels, as deep as a scene goes, are read (and refused for what they hold).
-    const fs::path four = folder.write("four.json", R"({"world": {"gravity": [[1], 2]}})");
-    CHECK(refusal(four) == four.string() + ": world.gravity[0]: must be a finite number (got [1])");
+    CHECK(refusal(file) == file.string() +
+                               R"(: world.gravity[0][0][0]: nested deeper than a scene can use (5 levels: )"
+                               R"({"list": [{"key": [[x, y]]}]}))");
+    // Five levels, as deep as a scene goes, are read (and refused for what they hold).
+    const fs::path five = folder.write("five.json", R"({"world": {"gravity": [[[1]], 2]}})");
+    CHECK(refusal(five) == five.string() + ": world.gravity[0]: must be a finite number (got [[1]])");
 }
 
 TEST_CASE("scene_file: a NUL byte is refused where it stands; the text after it is not ignored") {

@@ -82,10 +82,10 @@ TEST_CASE("compare_runs refuses a scene it cannot read, in one line, before anyt
     fs::create_directory(folder.path / "scenes");
     expectRefused(folder, "scenes", "'{}' '{}' " + kShort, "scenes: cannot read: it is a folder");
     expectRefused(folder, "/dev/zero", "'{}' '{}' " + kShort, "/dev/zero: cannot read: it is a device");
-    // 2 MB of nesting once segfaulted: a scene goes four levels deep, no deeper.
+    // 2 MB of nesting once segfaulted: a scene goes five levels deep, no deeper.
     const std::string deep = "{\"bodies\": " + std::string(1'000'000, '[') + std::string(1'000'000, ']') + "}";
     folder.write("deep.json", deep);
-    expectRefused(folder, "deep.json", "'{}' '{}' " + kShort, "is nested deeper than a scene can be (4 levels)");
+    expectRefused(folder, "deep.json", "'{}' '{}' " + kShort, "is nested deeper than a scene can be (5 levels)");
     folder.write("big.json", std::string(3 << 20, ' '));
     expectRefused(folder, "big.json", "'{}' '{}' " + kShort, "longer than 2097152 bytes");
     folder.write("list.json", "[1, 2]");

@@ -64,7 +64,7 @@ struct Simplex {
 // Which corners made the last simplex: the next call on the same pair starts there. A
 // shape moves little in one step, so the nearest features seldom change, and a call
 // started on them often ends after its first support query instead of walking there
-// again (the bench measures it; 5.8_wip/NOTES.md).
+// again (the bench measures it; docs/polygons_geometry.md).
 struct SimplexCache {
     std::array<std::uint8_t, 3> index_a{};
     std::array<std::uint8_t, 3> index_b{};

@@ -1,8 +1,8 @@
 // What GJK, SAT and EPA cost per pair of n-gons, n = 3 to 8, and how far EPA's depth and
 // normal are from SAT's (which are exact for polygons). Prints a Markdown table; its
-// figures are in ../NOTES.md. Not a test: timings depend on the machine and its load.
+// figures are in docs/polygons_geometry.md. Not a test: timings depend on the machine and its load.
 //
-//   build/ch5_demo/5.8_wip/polygons_bench
+//   build/polygons_bench
 //
 // Each row: 2,000 random pairs of n-gons (seeded, the tests' generator), timed over 50
 // passes. GJK runs on pairs placed at random (about half apart, half overlapping), cold
