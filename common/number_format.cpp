@@ -91,4 +91,12 @@ std::string to_js_string(double value) {
     return text.append(n - 1 < 0 ? "e-" : "e+").append(std::to_string(std::abs(n - 1)));
 }
 
+void append_round_trip(std::string& line, double value) {
+    constexpr int kRoundTripDigits = 17;  // enough to tell any two doubles apart
+    char digits[32];                      // the longest, "-2.2250738585072014e-308", needs 24
+    const auto end =
+        std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general, kRoundTripDigits).ptr;
+    line.append(digits, end);
+}
+
 }  // namespace browser

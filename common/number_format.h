@@ -17,4 +17,10 @@ std::string to_precision(double value, int digits);
 // "-Infinity" and "NaN".
 std::string to_js_string(double value);
 
+// Appends `value` with 17 significant digits, what %.17g prints: enough for std::strtod
+// to give back the very same double, so that files of numbers (the state dump, a stage's
+// events) compare number for number. std::to_chars ignores the C locale, which with a
+// decimal comma would otherwise break both the CSV and strtod in another locale.
+void append_round_trip(std::string& line, double value);
+
 }  // namespace browser

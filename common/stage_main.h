@@ -10,6 +10,8 @@
 //     (no default key script) unless --keys says otherwise;
 //   - the state dump (state_dump.h) after every fixed step, and the check that every
 //     number of the world is still a number;
+//   - the files of lines a stage writes beside the dump, each named by an option of its
+//     own (StepLog: the collision events' --events FILE), under the dump's discipline (output_file.h);
 //   - the run's budget (browser.h), from what the stage says its world costs;
 //   - the run itself (browser::run), and the exit statuses: 0; 1 a file that cannot be
 //     written; 2 a bad option, a refused scene or run, a place that may not be written;
@@ -36,6 +38,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -62,6 +65,18 @@ struct ObjectState {
     double angular_velocity = 0.0;  // rad/s
 };
 
+// A file of lines a stage writes after every fixed step, beside the dump: what the
+// world told in that step (the collision events of a stage that tells them, --events FILE). The harness opens it
+// when its option names a file, writes `header` and then, after every fixed step, what
+// `append` adds; it completes it only when the whole run succeeded (output_file.h).
+struct StepLog {
+    std::string option;                        // the option that names the file: one of the stage's extra_options
+    std::string what;                          // what the file is, for messages: "cannot write <what> FILE: ..."
+    std::string header;                        // its first line, without the line end
+    std::function<void()> start;               // called once, before step 0, when the file is asked for
+    std::function<void(std::string&)> append;  // appends the lines of the step just run, each ended by '\n'
+};
+
 // What the harness sees of a page's world. Each part may be left empty: a page with no
 // world stepping in fixed steps (the first chapter's) has none, and only a stage with scene files dumps.
 struct PageWorld {
@@ -69,6 +84,7 @@ struct PageWorld {
     std::function<std::vector<ObjectState>()> objects;   // every object now, in list order
     std::function<void(std::function<void()>)> on_step;  // calls its argument after every fixed step
     std::function<WorldCost(const KeyScript&)> cost;     // what a run with these keys may cost
+    std::vector<StepLog> logs;                           // the files of lines it can write, if any
 };
 
 // A stage's page: the book's two callbacks (PageScripts), and its world.

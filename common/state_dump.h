@@ -18,32 +18,20 @@
 // significant digits, which is what it takes for std::strtod to give back the very same
 // double; a simulation that blew up shows as nan or inf, which strtod reads too.
 //
-// A dump grows row by row over a whole run, so it is written to "<path>.partial-<pid>"
-// and only finish() renames it to <path>. A run that stops with an error therefore never
-// leaves a file that looks like a complete dump: the destructor removes the partial file
-// (and so does an interruption, interruption.h; only a crash can leave one behind, under
-// its telling name, which the next dump to <path> removes once that process is gone), and
-// a dump an earlier run wrote to <path> stays as it was until the new one is complete.
-//
-// <path> must pass write_guard.h's rule (a plain regular file with one name or nothing
-// yet, never a link, a FIFO, a device or a folder, nor a file the run reads): anything
-// else is refused (OutputRefused), never replaced. Nor may it be the --out folder or
-// hold it. A dump inside the run's --out folder goes directly into it, under a name
-// none of the run's pictures has; it is written beside that folder, moved into it by
-// finish() after the run has put its new folder in place of the old one, and added to
-// the folder's manifest (output_folder.h), so the next run may replace it.
+// The file is written as every output file of a run is (output_file.h): to a partial
+// file first, renamed only by finish(), never replacing what the write guard refuses,
+// and moved into the --out folder after the run when it is named inside it.
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
-#include "interruption.h"
+#include "output_file.h"
 #include "png_io.h"  // FileError, OutputRefused
 #include "vec2.h"
 
@@ -55,15 +43,12 @@ inline constexpr std::string_view kDumpHeaderWithIds = "step,index,id,shape,cx,c
 
 class StateDump {
 public:
-    // Creates the partial file (the header line waits for the first row). `out` is the run's --out
-    // folder ("" for none), `inputs` the files the run reads. Throws OutputRefused when <path> may not be written (see
-    // above), FileError when the partial file cannot be created; each one line naming
-    // `path`.
+    // Creates the partial file (the header line waits for the first row). `out` is the
+    // run's --out folder ("" for none), `inputs` the files the run reads. Throws
+    // OutputRefused when <path> may not be written (output_file.h), FileError when the
+    // partial file cannot be created; each one line naming `path`.
     explicit StateDump(std::filesystem::path path, const std::filesystem::path& out = {},
                        std::span<const std::filesystem::path> inputs = {});
-    // Removes the partial file unless finish() succeeded.
-    ~StateDump();
-
     StateDump(const StateDump&) = delete;
     StateDump& operator=(const StateDump&) = delete;
 
@@ -82,20 +67,13 @@ public:
     // partial file, when any write failed or the rename is refused.
     void finish();
 
-    const std::filesystem::path& path() const { return path_; }
+    const std::filesystem::path& path() const { return file_.path(); }
 
 private:
     void write_row(long step, std::size_t index, std::optional<std::uint64_t> id, std::string_view kind,
                    lib::Vec2 center, double angle, lib::Vec2 velocity, double angular_velocity);
-    [[noreturn]] void fail(const std::string& reason);
 
-    std::filesystem::path path_;
-    std::filesystem::path partial_;
-    std::optional<Leftover> leftover_;  // partial_, should the run be interrupted
-    std::filesystem::path out_folder_;  // the run's --out folder, "" for none
-    bool inside_out_ = false;           // path_ is inside the --out folder
-    std::ofstream out_;
-    bool finished_ = false;
+    OutputFile file_;
     std::optional<bool> with_ids_;  // the first row's kind, once it is written
 };
 

@@ -1,5 +1,6 @@
-// Fuzz target: a scene read and run by the newest stage (5.6: sleeping, continuous
-// collision and bullets on as a scene file sets them). The input is the scene file's
+// Fuzz target: a scene read and run by the newest stage (5.7: sleeping, continuous
+// collision, bullets and sensors as a scene file sets them, and its collision events
+// kept). The input is the scene file's
 // text, as --scene reads it; an accepted scene is built and stepped, as the program
 // would run it, for as many steps as a small budget of pair tests allows (up to 20).
 //
@@ -8,10 +9,14 @@
 //  - a refusal is one line;
 //  - every sweep of a fast shape (continuous.h) stops it at a share of its step in
 //    [0, 1], on the straight line from where its step began to where its motion took it;
-//  - the same scene run twice gives the same state, bit for bit.
+//  - the same scene run twice gives the same state, bit for bit;
+//  - with collision events (contact_events.h, from 5.7), per pair begins and ends
+//    alternate, a hit follows its begin, and begins minus ends are the pairs touching.
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -56,10 +61,50 @@ void checkSweeps(const engine::Core& core) {
     }
 }
 
+#if __has_include("contact_events.h")
+// Per pair, 1 while it touches; and begins minus ends over the run.
+struct EventTally {
+    std::map<std::pair<engine::BodyId, engine::BodyId>, int> touching;
+    long open = 0;
+};
+
+void checkEvents(const engine::Core& core, EventTally& tally) {
+    const std::vector<engine::ContactEvent>& events = core.events().events();
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const engine::ContactEvent& event = events[i];
+        fuzz::require(event.id_a < event.id_b, "an event names its pair smaller id first");
+        int& state = tally.touching[{event.id_a, event.id_b}];
+        switch (event.kind) {
+            case engine::EventKind::begin:
+                fuzz::require(state == 0, "a pair begins only when it was not touching");
+                state = 1;
+                ++tally.open;
+                break;
+            case engine::EventKind::end:
+                fuzz::require(state == 1, "a pair ends only when it was touching");
+                state = 0;
+                --tally.open;
+                break;
+            case engine::EventKind::hit:
+                fuzz::require(i > 0 && events[i - 1].kind == engine::EventKind::begin &&
+                                  events[i - 1].id_a == event.id_a && events[i - 1].id_b == event.id_b,
+                              "a hit follows its begin");
+                break;
+        }
+    }
+    fuzz::require(tally.open == static_cast<long>(core.events().touchingCount()),
+                  "begins minus ends are the pairs touching");
+}
+#endif
+
 // Runs the scene; the state after each step, every body in order.
 std::vector<BodyState> run(const engine::Scene& scene) {
     browser::Window window(scene.world.dt * 1000.0);
     engine::Core core(window, scene.world);
+#if __has_include("contact_events.h")
+    core.keepEvents(true);  // they only watch: the second run, the same, keeps them too
+    EventTally tally;
+#endif
     engine::buildScene(core, scene.bodies);
     const browser::PageWorld world = engine::pageWorld(core);
     const browser::WorldCost cost = engine::worldCost(core, browser::KeyScript());
@@ -69,6 +114,9 @@ std::vector<BodyState> run(const engine::Scene& scene) {
     for (int step = 0; step < steps; ++step) {
         core.update();
         if (scene.world.substeps == 1) checkSweeps(core);  // a sub-step's sweeps are its own
+#if __has_include("contact_events.h")
+        checkEvents(core, tally);
+#endif
         try {
             browser::check_finite(world);
         } catch (const browser::NonFiniteState&) {

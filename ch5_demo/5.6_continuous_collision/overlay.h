@@ -44,7 +44,7 @@
 // each shape's rest timer as a ring that fills, the sleeping shapes; and the grid's
 // layer leaves out the pairs the broad phase passes over asleep.
 //
-// This stage's continuous collision adds the sweeps (continuous.h): each fast shape's
+// 5.6's continuous collision adds the sweeps (continuous.h): each fast shape's
 // path in the last step, and where the sweep stopped it.
 
 #include <cstddef>

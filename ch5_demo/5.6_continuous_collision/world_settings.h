@@ -8,7 +8,7 @@
 // the removal of shapes that fall off the canvas, 5.2 the choice of broad phase
 // (broad_phase.h), 5.3 the knobs that trade speed against accuracy, 5.4 a second
 // contact solver with its own knobs (contact_solver.h), 5.5 sleeping (islands.h) and
-// this stage continuous collision (continuous.h). Each knob's default but sleep and
+// 5.6 continuous collision (continuous.h). Each knob's default but sleep and
 // continuous is what the book does, so a scene that leaves them out and turns both off
 // runs as 5.2.
 
@@ -112,7 +112,7 @@ struct WorldSettings {
     bool sleep = true;
     double sleep_speed = kSleepSpeed;     // px/s, the least (sleepSpeed, below)
     double time_to_sleep = kTimeToSleep;  // s
-    // This stage's continuous collision (continuous.h): a shape that moves far in a step
+    // 5.6's continuous collision (continuous.h): a shape that moves far in a step
     // against its own size is swept to where it first touches, so it cannot pass
     // through a thin wall. On unless a scene turns it off; off, every scene runs as in
     // 5.5, bit for bit, and on it changes nothing in a step with no fast shape.

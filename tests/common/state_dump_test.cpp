@@ -243,7 +243,7 @@ TEST_CASE("state_dump: a dump inside the --out folder waits beside it and moves 
     StateDump dump(out / "dump.csv", out);
     dump.row(0, 0, "circle", {1, 2}, 0, {0, 0}, 0);
     // The run replaces the folder as a whole: the dump must not be inside the old one.
-    CHECK(folder.files() == std::vector<std::string>{"out", "out.dump-partial-" + std::to_string(::getpid())});
+    CHECK(folder.files() == std::vector<std::string>{"out", "out.dump.csv-partial-" + std::to_string(::getpid())});
     fs::remove_all(out);
     fs::create_directories(out);  // the run's new folder
     dump.finish();

@@ -108,7 +108,7 @@ TEST_CASE("hostile files: a dump named like a picture of the run, or around the 
                            "it is named as a file the run writes into the --out folder");
     }
     test::checkRefused(folder, kQuickRun + " --dump " + test::quoted(out / "sub" / "dump.csv") + outAt(out),
-                       "a dump inside the --out folder goes directly into it");
+                       "a state dump inside the --out folder goes directly into it");
     // The dump holds the --out folder: refused before a picture is written.
     test::checkRefused(folder,
                        kQuickRun + " --dump " + test::quoted(folder.path / "o") + outAt(folder.path / "o" / "p"),

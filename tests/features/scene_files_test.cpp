@@ -383,6 +383,11 @@ std::vector<StartRow> bookSceneAtStepZero() {
                 {"rectangle", 200, 400, 0, {}},
                 {"rectangle", 100, 200, 0, {}},
                 {"rectangle", 10, 360, 0, {}}};
+#if __has_include("contact_events.h")
+        // 5.7's demo game (my_game.h): its zone and its goal, two sensors, after the platforms.
+        rows.push_back({"rectangle", 200, 360, 0, {}});
+        rows.push_back({"rectangle", 620, 425, 0, {}});
+#endif
         browser::Random book(browser::Random::kDefaultSeed);  // the program's default seed
         for (const test::DemoShape& shape : test::demoShapesAsTheBookDraws(book)) {
             rows.push_back({shape.is_box ? "rectangle" : "circle", shape.center.x, shape.center.y, 0, shape.velocity});
