@@ -400,6 +400,7 @@ ParsedCommandLine parse_command_line(int argc, const char* const* argv, const St
         options.overlay_offered = !defaults.overlay.empty();
         options.overlay = texts.overlay;
         options.overlay_all = texts.overlay_all;
+        options.echo_notes = defaults.echo_notes;
         if (texts.live) options.live = live_options(app, texts, defaults, argc, argv, program);
         // Last, so the note about a skipped GIF never comes with an error about another option.
         options.gif = !texts.live && want_gif && gif_possible(texts.gif, program);

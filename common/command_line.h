@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "keys.h"
+#include "page.h"
 
 namespace browser {
 
@@ -50,6 +51,9 @@ struct StageDefaults {
     // What the stage's overlay draws, for --help ("" when it has none). A stage with one
     // takes --overlay (the overlay on from the first frame) and the key kOverlayKey.
     std::string overlay;
+    // What the page notes on lines of the book's echo (page.h's EchoNote): a quirk of
+    // the book's a stage keeps, said beside the line that shows it.
+    std::vector<EchoNote> echo_notes;
 };
 
 // The key that takes a stage's overlay round (off, the stage's own layer, every layer),
@@ -96,6 +100,8 @@ struct Options {
     bool overlay_offered = false;  // the stage has an overlay: kOverlayKey takes it round
     bool overlay = false;          // --overlay: it is on from the first frame, the stage's own layer
     bool overlay_all = false;      // --overlay-all: on from the first frame, every stage's layers
+    // The stage's notes on lines of the echo (StageDefaults::echo_notes).
+    std::vector<EchoNote> echo_notes;
     // One entry per StageDefaults::extra_options, keyed by name: extra.at("--scene").
     std::map<std::string, std::string> extra;
 };

@@ -107,16 +107,29 @@ void label(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
 
 void LabelLayout::place(Canvas& canvas, Vec2 at, Color color, std::string_view text) {
     const double width = text_width(text), height = text_line_height();
-    Box box{at.x, at.y, at.x + width, at.y + height};
-    const auto overlaps = [&box](const Box& other) {
-        return box.left < other.right + kLabelGap && other.left < box.right + kLabelGap && box.top < other.bottom &&
-               other.top < box.bottom;
+    // On the canvas: its left and top edges win where the label is wider or taller.
+    const double left = std::max(kLabelMargin, std::min(at.x, canvas.width() - kLabelMargin - width));
+    const double asked_top = std::max(kLabelMargin, std::min(at.y, canvas.height() - kLabelMargin - height));
+    const double lowest_top = canvas.height() - kLabelMargin - height;
+    const auto at_top = [&](double top) { return Box{left, top, left + width, top + height}; };
+    const auto crossed = [this](const Box& box) {
+        return std::find_if(placed_.begin(), placed_.end(), [&box](const Box& other) {
+            return box.left < other.right + kLabelGap && other.left < box.right + kLabelGap && box.top < other.bottom &&
+                   other.top < box.bottom;
+        });
     };
-    // Each move clears at least the box it overlapped, so this ends within placed_.size() moves.
-    for (auto crossed = std::find_if(placed_.begin(), placed_.end(), overlaps); crossed != placed_.end();
-         crossed = std::find_if(placed_.begin(), placed_.end(), overlaps)) {
-        box.top = crossed->bottom;
-        box.bottom = box.top + height;
+    // Down past each label it crosses, while it stays on the canvas; each move clears at
+    // least the box it crossed, so this ends within placed_.size() moves. Then up.
+    Box box = at_top(asked_top);
+    for (auto other = crossed(box); other != placed_.end() && box.top <= lowest_top; other = crossed(box)) {
+        box = at_top(other->bottom);
+    }
+    if (box.top > lowest_top) {
+        box = at_top(asked_top);
+        for (auto other = crossed(box); other != placed_.end() && box.top >= kLabelMargin; other = crossed(box)) {
+            box = at_top(other->top - height);
+        }
+        if (box.top < kLabelMargin) box = at_top(asked_top);
     }
     placed_.push_back(box);
     label(canvas, {box.left, box.top}, color, text);

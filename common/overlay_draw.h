@@ -52,10 +52,15 @@ void turn_arrow(Canvas& canvas, lib::Vec2 center, double r, double start, double
 void label(Canvas& canvas, lib::Vec2 at, Color color, std::string_view text);
 
 // Labels that must stay readable where what they label crowds together (a pile of
-// shapes): each goes where it is asked to, or as many lines lower as it takes to clear
-// the labels placed before it, with kLabelGap to spare on either side, so two labels on
-// one line never run into each other. One layout a frame.
-inline constexpr double kLabelGap = 6.0;  // px between two labels side by side
+// shapes) or lies at the canvas's edge (a border, a corner): each goes where it is asked
+// to, moved in just enough to stand wholly on the canvas, kLabelMargin inside its edge;
+// then, if it would cross a label placed before it, as many lines lower as it takes to
+// clear them, with kLabelGap to spare on either side, so two labels on one line never run
+// into each other; or, where that would take it off the canvas's foot, as many lines
+// higher. Only a canvas too full for either keeps it where it was asked, over another.
+// One layout a frame.
+inline constexpr double kLabelGap = 6.0;     // px between two labels side by side
+inline constexpr double kLabelMargin = 2.0;  // px between a label and the canvas's edge (its frame is 1 px)
 
 class LabelLayout {
 public:

@@ -54,26 +54,57 @@ void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
     }
 }
 
-// The legend's band (Document::legend_room): kLegendRows lines of entries in columns
-// kLegendColumnWidth wide, as many as the page's width holds, filled top to bottom and
-// then left to right, so that each layer's entries stay together.
-constexpr int kLegendRows = 7;
+// The legend's band (Document::legend_room): entries in columns kLegendColumnWidth wide,
+// as many as the page's width holds, in as many rows as the entries fill, filled top to
+// bottom and then left to right, so that each layer's entries stay together.
 constexpr int kLegendColumnWidth = 390;
 
 int legend_columns(int page_width) { return std::max(1, (page_width - kPanelMargin) / kLegendColumnWidth); }
 
-int legend_height(const Document& document) {
-    if (!document.legend_room && document.legend.empty()) return 0;
-    return kLegendRows * kLineHeight + kPanelMargin;
+int legend_rows(std::size_t entries, int page_width) {
+    const std::size_t columns = static_cast<std::size_t>(legend_columns(page_width));
+    return static_cast<int>(std::max<std::size_t>(1, (entries + columns - 1) / columns));
 }
+
+// The entries the band is made for: the stage's most, or the legend's own, if more.
+std::size_t legend_entries(const Document& document) {
+    if (!document.legend_room && document.legend.empty()) return 0;
+    return std::max({document.legend_entries, document.legend.size(), std::size_t{1}});
+}
+
+int page_width(const Document& document) { return static_cast<int>(document.canvas.width()) + kPanelWidth; }
 
 void draw_legend(Image& page, const Document& document, int top);
 
-// The band under the page (Document::beyond_echo): its first line this far below the
-// canvas, and a half margin under its last.
+// The band under the page (Document::echo_notes, Document::beyond_echo): its first line
+// this far below the canvas, and a half margin under its last.
 constexpr int kBandGap = kPanelMargin / 2;
 
-// The band's lines, one a '\n', each wrapped to the panel's width as the echo's are.
+// An echo note's mark and text: dim, so that they read as the page's, not the book's.
+constexpr Color kNoteColor = colors::kGray;
+
+// The note on `line` of the echo, if the stage has one.
+const EchoNote* note_on(const Document& document, std::string_view line) {
+    const std::size_t first_letter = line.find_first_not_of(' ');
+    if (first_letter == std::string_view::npos) return nullptr;
+    for (const EchoNote& note : document.echo_notes) {
+        if (!note.line_start.empty() && line.substr(first_letter).starts_with(note.line_start)) return &note;
+    }
+    return nullptr;
+}
+
+// The notes' lines on the band: each note's mark and text, wrapped to the panel's width.
+std::vector<std::string> note_lines(const Document& document) {
+    std::vector<std::string> lines;
+    for (const EchoNote& note : document.echo_notes) {
+        for (std::string& piece : wrap(font_text(note.mark + " " + note.text), kPanelWidth - 2 * kPanelMargin)) {
+            lines.push_back(std::move(piece));
+        }
+    }
+    return lines;
+}
+
+// The beyond_echo's lines, one a '\n', each wrapped to the panel's width as the echo's are.
 std::vector<std::string> beyond_lines(const Document& document) {
     std::vector<std::string> lines;
     std::string_view text = document.beyond_echo;
@@ -87,20 +118,27 @@ std::vector<std::string> beyond_lines(const Document& document) {
     return lines;
 }
 
-int band_height(const std::vector<std::string>& lines) {
-    if (lines.empty()) return 0;
-    return kBandGap + static_cast<int>(lines.size()) * kLineHeight + kPanelMargin / 2;
+int band_height(std::size_t lines) {
+    if (lines == 0) return 0;
+    return kBandGap + static_cast<int>(lines) * kLineHeight + kPanelMargin / 2;
 }
 
 }  // namespace
 
+int legend_band_height(std::size_t entries, int page_width) {
+    if (entries == 0) return 0;
+    return legend_rows(entries, page_width) * kLineHeight + kPanelMargin;
+}
+
 Image render_page(const Document& document) {
     const Image& canvas = document.canvas.pixels();
     const int scale = document.canvas.scale();
+    const std::vector<std::string> notes = note_lines(document);
     const std::vector<std::string> beyond = beyond_lines(document);
-    const int legend_top = document.canvas.height() + band_height(beyond);
-    Image page(canvas.width + kPanelWidth * scale,
-               canvas.height + (band_height(beyond) + legend_height(document)) * scale, colors::kWhite);
+    const int band = band_height(notes.size() + beyond.size());
+    const int legend_top = static_cast<int>(document.canvas.height()) + band;
+    const int legend_height = legend_band_height(legend_entries(document), page_width(document));
+    Image page(canvas.width + kPanelWidth * scale, canvas.height + (band + legend_height) * scale, colors::kWhite);
     page.paste(canvas, 0, 0);
 
     // The frame lies on the canvas's outermost pixels (its outermost `scale` rows and
@@ -118,25 +156,39 @@ Image render_page(const Document& document) {
         }
     }
 
-    // The echo panel: one text line per '\n', wrapped to the panel, cut at its bottom.
-    // Laid out in page pixels, drawn in device pixels.
+    // The echo panel: one text line per '\n', wrapped to the panel, cut at its bottom:
+    // a line is drawn only if its letters end above the canvas's bottom (its line, less
+    // the space under the letters), so that no line is half drawn and none runs into the
+    // band under the page. Laid out in page pixels, drawn in device pixels.
     const int text_left = document.canvas.width() + kPanelMargin;
     const int text_width_limit = kPanelWidth - 2 * kPanelMargin;
-    const int text_bottom = document.canvas.height() + kLineHeight;
+    const int text_bottom = document.canvas.height() + kBandGap;
     int y = kPanelMargin;
     std::string_view echo = document.ui_echo;
     while (!echo.empty() && y + kLineHeight <= text_bottom) {
         const std::size_t end = echo.find('\n');
+        const EchoNote* note = note_on(document, echo.substr(0, end));
         const std::string line = font_text(echo.substr(0, end));
         echo = end == std::string_view::npos ? std::string_view{} : echo.substr(end + 1);
-        for (const std::string& piece : wrap(line, text_width_limit)) {
+        const std::vector<std::string> pieces = wrap(line, text_width_limit);
+        for (const std::string& piece : pieces) {
+            if (y + kLineHeight > text_bottom) break;
             draw_text(page, piece, text_left * scale, y * scale, kTextColor, scale);
+            // A noted line's mark, dim, a letter's gap after its last piece.
+            if (note != nullptr && &piece == &pieces.back()) {
+                const int after = text_left + text_width(piece) + text_width(" ") / 2;
+                draw_text(page, font_text(note->mark), after * scale, y * scale, kNoteColor, scale);
+            }
             y += kLineHeight;
         }
     }
-    // The stage's own section, on the band: under the panel's lines, where a reader of
-    // the panel goes on reading.
+    // On the band under the panel, where a reader of the panel goes on reading: the
+    // notes on the echo's lines, dim, then the stage's own section.
     y = document.canvas.height() + kBandGap;
+    for (const std::string& line : notes) {
+        draw_text(page, line, text_left * scale, y * scale, kNoteColor, scale);
+        y += kLineHeight;
+    }
     for (const std::string& line : beyond) {
         draw_text(page, line, text_left * scale, y * scale, kTextColor, scale);
         y += kLineHeight;
@@ -149,27 +201,20 @@ namespace {
 
 // The legend in its band under everything else, so it never covers a line of the echo
 // nor of the stage's own section: a box the page's width, a swatch and a line for each
-// entry. Entries beyond what the band holds give way to a last line that counts them.
+// entry; the band has a row for every entry (legend_entries).
 void draw_legend(Image& page, const Document& document, int top) {
     if (document.legend.empty()) return;  // the room kept for it stays blank
     const int k = document.canvas.scale();
     const int width = page.width / k;
     const int left = kPanelMargin / 2, right = width - kPanelMargin / 2;
-    const int bottom = top + legend_height(document) - kPanelMargin / 2;
+    const int bottom = top + legend_band_height(legend_entries(document), width) - kPanelMargin / 2;
     fill(page, left * k, top * k, right * k, bottom * k, kLegendBorder);
     fill(page, (left + 1) * k, (top + 1) * k, (right - 1) * k, (bottom - 1) * k, colors::kWhite);
-    const std::size_t cells = static_cast<std::size_t>(legend_columns(width)) * kLegendRows;
-    const std::size_t shown = document.legend.size() <= cells ? document.legend.size() : cells - 1;
-    for (std::size_t index = 0; index <= shown && index < cells; ++index) {
-        const int column = static_cast<int>(index) / kLegendRows, row = static_cast<int>(index) % kLegendRows;
+    const int rows = legend_rows(legend_entries(document), width);
+    for (std::size_t index = 0; index < document.legend.size(); ++index) {
+        const int column = static_cast<int>(index) / rows, row = static_cast<int>(index) % rows;
         const int x = left + kPanelMargin / 2 + column * kLegendColumnWidth;
         const int y = top + kPanelMargin / 2 + row * kLineHeight;
-        if (index == shown) {
-            if (shown == document.legend.size()) break;
-            const std::string more = std::to_string(document.legend.size() - shown) + " more entries";
-            draw_text(page, more, x * k, y * k, kTextColor, k);
-            break;
-        }
         const LegendEntry& entry = document.legend[index];
         const int swatch_top = y + (kLineHeight - kSwatchSize) / 2 - 2;
         fill(page, x * k, swatch_top * k, (x + kSwatchSize) * k, (swatch_top + kSwatchSize) * k, entry.color);

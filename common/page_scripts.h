@@ -29,6 +29,11 @@ struct Window {
     // read it); true, the layers of every stage before it too (--overlay-all, or
     // kOverlayKey pressed while the stage's own layer shows).
     bool overlay_all = false;
+    // Whether every layer can come on in this run (--overlay-all, enough presses of
+    // kOverlayKey in the key script, a live session): the page then keeps room for the
+    // legend of every layer, and otherwise for that of the stage's own layer (page.h's
+    // Document::legend_entries, which the stage's overlay sets from it).
+    bool every_layer_possible = false;
 };
 
 // What a stage's index.html registers with the browser.

@@ -55,6 +55,7 @@ void drawBroadPhase(Sheet& sheet, const Core& core) {
 void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
+    window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     drawBroadPhase(sheet, core);

@@ -32,7 +32,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first five objects"},
     },
-    .overlay = "the collision info of each colliding pair: start, end, normal and depth",
+    .overlay = "the collision info of each colliding pair: start, end, normal and depth (--overlay-all: the bounding circles too)",
 };
 // clang-format on
 

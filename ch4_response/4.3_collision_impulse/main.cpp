@@ -47,7 +47,10 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first six objects"},
     },
-    .overlay = "the impulses of the last step (--overlay-all: the collision info, velocities and spins, the correction too)",
+    .overlay = "the impulses of the last step (--overlay-all: the bounding circles, the collision info, velocities and spins, the correction too)",
+    // The page notes the book's quirk beside the echo's mass (docs/errata.md): the echo
+    // keeps the book's number.
+    .echo_notes = {{"Mass:", "*", "the book's quirk: 1 / (1/mass rounded to 3 digits); docs/errata.md"}},
 };
 // clang-format on
 

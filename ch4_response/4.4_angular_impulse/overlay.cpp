@@ -22,6 +22,8 @@ struct Sheet {
 
 // Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
 // never reads as the page's own.
+constexpr Color kBoundColor{150, 150, 150, 255};  // gray: the bounding circles
+
 constexpr Color kStartColor{0, 150, 150, 255};   // teal: where the overlap starts
 constexpr Color kEndColor{160, 0, 200, 255};     // purple: where it ends
 constexpr Color kNormalColor{200, 0, 120, 255};  // crimson: the normal
@@ -37,6 +39,18 @@ constexpr Color kLeverColor{110, 110, 110, 255};  // gray: lever arms and spin c
 
 // The normal is a unit vector: drawn this long, whatever the depth.
 constexpr double kNormalLength = 20.0;  // px
+
+// 3.1's layer, under every later one: the bounding circle of every rectangle (a
+// circle's is its own outline), which the broad phase compares before a pair gets the
+// exact test.
+void drawBounds(Sheet& sheet, const Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        if (shape.type() == ShapeType::Rectangle)
+            draw::ring(sheet.canvas, shape.center(), shape.boundRadius(), kBoundColor);
+    }
+    sheet.legend.push_back({kBoundColor, "bounding circle of a rectangle"});
+}
 
 // The collision info of every pair the last pass found: start, end, the normal from the
 // start, and the depth beside the end.
@@ -151,13 +165,15 @@ void drawLeverArms(Sheet& sheet, const Core& core) {
 void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
+    window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     // 4.4's own layer is the lever arms, with the impulses that act at their end (a
-    // lever arm reads only with its impulse); every layer adds the collision info, the
-    // motion and the correction of the stages before.
+    // lever arm reads only with its impulse); every layer adds the bounding circles, the
+    // collision info, the motion and the correction of the stages before.
     const bool all = window.overlay_all;
     if (all) {
+        drawBounds(sheet, core);
         drawCollisionInfo(sheet, core);
         drawMotion(sheet, core);
         drawCorrection(sheet, core);

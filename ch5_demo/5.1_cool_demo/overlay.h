@@ -34,10 +34,19 @@
 // a second curved arrow, outside its spin, for the change of spin the impulses gave it
 // (as far as that change turns the shape in half a second).
 
+#include <cstddef>
+
 #include "browser.h"
 #include "core.h"
 
 namespace engine {
+
+// The most entries the overlay's legend holds, with the stage's own layer alone and with
+// every layer on: the page keeps a band for that many under it (page.h's
+// Document::legend_entries), the second in a run where every layer can come on, so that
+// every picture of a run has one height, whichever layers are on.
+inline constexpr std::size_t kOwnLegendEntries = 3;
+inline constexpr std::size_t kLegendEntries = 10;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

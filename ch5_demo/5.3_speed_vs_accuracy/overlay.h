@@ -37,10 +37,19 @@
 // 5.2's grid broad phase adds its own (grid_overlay.h): the grid's cells, the candidate
 // pairs on its list, and the pair tests a pass saves.
 
+#include <cstddef>
+
 #include "browser.h"
 #include "core.h"
 
 namespace engine {
+
+// The most entries the overlay's legend holds, with the stage's own layer alone and with
+// every layer on: the page keeps a band for that many under it (page.h's
+// Document::legend_entries), the second in a run where every layer can come on, so that
+// every picture of a run has one height, whichever layers are on.
+inline constexpr std::size_t kOwnLegendEntries = 5;
+inline constexpr std::size_t kLegendEntries = 15;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

@@ -24,6 +24,8 @@ struct Sheet {
 
 // Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
 // never reads as the page's own.
+constexpr Color kBoundColor{150, 150, 150, 255};  // gray: the bounding circles
+
 constexpr Color kStartColor{0, 150, 150, 255};   // teal: where the overlap starts
 constexpr Color kEndColor{160, 0, 200, 255};     // purple: where it ends
 constexpr Color kNormalColor{200, 0, 120, 255};  // crimson: the normal
@@ -39,6 +41,18 @@ constexpr Color kLeverColor{110, 110, 110, 255};  // gray: lever arms and spin c
 
 // The normal is a unit vector: drawn this long, whatever the depth.
 constexpr double kNormalLength = 20.0;  // px
+
+// 3.1's layer, under every later one: the bounding circle of every rectangle (a
+// circle's is its own outline), which the broad phase compares before a pair gets the
+// exact test.
+void drawBounds(Sheet& sheet, const Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        if (shape.type() == ShapeType::Rectangle)
+            draw::ring(sheet.canvas, shape.center(), shape.boundRadius(), kBoundColor);
+    }
+    sheet.legend.push_back({kBoundColor, "bounding circle of a rectangle"});
+}
 
 // The collision info of every pair the last pass found: start, end, the normal from the
 // start, and the depth beside the end.
@@ -153,6 +167,7 @@ void drawLeverArms(Sheet& sheet, const Core& core) {
 void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
+    window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     // 5.4's own layer is the solver's contacts (contact_overlay.h): faces, clipped
@@ -162,6 +177,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
     const bool all = window.overlay_all;
     const bool book_solver = core.settings().solver == SolverKind::book;
     if (all) {
+        drawBounds(sheet, core);
         drawGrid(sheet.canvas, core, legend);
         drawCollisionInfo(sheet, core);
         drawMotion(sheet, core);

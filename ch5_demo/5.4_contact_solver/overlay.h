@@ -40,10 +40,19 @@
 // 5.4's contact solver adds its contacts (contact_overlay.h): reference and incident
 // faces, the clipped points, and the totals each point ended the step with.
 
+#include <cstddef>
+
 #include "browser.h"
 #include "core.h"
 
 namespace engine {
+
+// The most entries the overlay's legend holds, with the stage's own layer alone and with
+// every layer on: the page keeps a band for that many under it (page.h's
+// Document::legend_entries), the second in a run where every layer can come on, so that
+// every picture of a run has one height, whichever layers are on.
+inline constexpr std::size_t kOwnLegendEntries = 7;
+inline constexpr std::size_t kLegendEntries = 22;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

@@ -60,6 +60,22 @@ constexpr Color kPurple{160, 0, 200, 255};
 
 bool same(Color a, Color b) { return a == b; }
 
+// Whether every pixel of `color` on `canvas` lies at least `margin` px inside its edges;
+// and how many there are.
+int inkInside(const browser::Canvas& canvas, Color color, int margin, bool& inside) {
+    int ink = 0;
+    inside = true;
+    for (int j = 0; j < canvas.height(); ++j) {
+        for (int i = 0; i < canvas.width(); ++i) {
+            if (canvas.pixels().at(i, j) != color) continue;
+            ++ink;
+            if (i < margin || j < margin || i >= canvas.width() - margin || j >= canvas.height() - margin)
+                inside = false;
+        }
+    }
+    return ink;
+}
+
 }  // namespace
 
 TEST_CASE("overlay: --overlay and the key t exist only on a stage with an overlay") {
@@ -175,9 +191,10 @@ TEST_CASE("overlay: the legend is a band under the page, a swatch a line, and co
     const browser::Image without = browser::render_page(document);
     document.legend = {{kPurple, "one"}, {browser::colors::kRed, "two"}};
     const browser::Image with = browser::render_page(document);
-    // The page grew by the band: seven lines of 18 px and a margin of 10.
+    // The page grew by the band: a line of 18 px for each of the two entries (the page,
+    // 200 + 380 px wide, holds one column of 390 px) and a margin of 10.
     REQUIRE(with.width == without.width);
-    REQUIRE(with.height == 300 + 7 * 18 + 10);
+    REQUIRE(with.height == 300 + 2 * 18 + 10);
     // Everything above the band is the page without a legend: every echo line whole.
     for (int j = 0; j < 300; ++j) {
         for (int i = 0; i < with.width; ++i) REQUIRE(with.at(i, j) == without.at(i, j));
@@ -221,23 +238,89 @@ TEST_CASE("overlay: room kept for the legend keeps the page's size, and is blank
     }
 }
 
-TEST_CASE("overlay: a legend longer than its band counts the entries it has no room for") {
-    browser::Document document{browser::Canvas(200, 300), "echo"};  // a page 580 px wide: one column
-    for (int entry = 0; entry < 10; ++entry) document.legend.push_back({kPurple, "entry"});
-    const browser::Image page = browser::render_page(document);
-    // Seven rows: six swatches and the line "4 more entries", in black.
-    int swatches = 0, black_rows = 0;
-    for (int j = 300; j < page.height; ++j) {
-        bool purple = false, black = false;
+TEST_CASE("overlay: the legend's band has a row for every entry the stage's overlay can show, in columns") {
+    // A page 200 + 380 = 580 px wide holds one column of 390 px; 800 + 380 = 1180 three.
+    CHECK(browser::legend_band_height(0, 580) == 0);
+    CHECK(browser::legend_band_height(1, 580) == 1 * 18 + 10);
+    CHECK(browser::legend_band_height(10, 580) == 10 * 18 + 10);
+    CHECK(browser::legend_band_height(10, 1180) == 4 * 18 + 10);  // 4 + 3 + 3
+    CHECK(browser::legend_band_height(9, 1180) == 3 * 18 + 10);
+
+    browser::Document document{browser::Canvas(200, 300), "echo"};
+    document.legend_room = true;
+    document.legend_entries = 10;  // the most the stage's overlay shows
+    document.legend = {{kPurple, "entry"}, {kPurple, "entry"}, {kPurple, "entry"}};
+    const browser::Image three = browser::render_page(document);
+    // The band keeps the stage's ten rows while three are shown: one height a run.
+    CHECK(three.height == 300 + 10 * 18 + 10);
+    // A legend longer than the stage said grows the band, and shows every entry.
+    document.legend.assign(12, {kPurple, "entry"});
+    const browser::Image twelve = browser::render_page(document);
+    CHECK(twelve.height == 300 + 12 * 18 + 10);
+    int swatch_rows = 0;
+    for (int j = 300; j < twelve.height; ++j) {
         for (int i = 0; i < 60; ++i) {
-            purple = purple || page.at(i, j) == kPurple;
-            black = black || page.at(i, j) == browser::colors::kBlack;
+            if (twelve.at(i, j) == kPurple) {
+                ++swatch_rows;
+                break;
+            }
         }
-        swatches += purple ? 1 : 0;
-        black_rows += black ? 1 : 0;
     }
-    CHECK(swatches == 6 * 12);
-    CHECK(black_rows > 0);  // the count's text, where a seventh swatch would be
+    CHECK(swatch_rows == 12 * 12);  // twelve swatches of 12 px, one under the other
+}
+
+TEST_CASE("overlay: a note on a line of the echo is a dim mark after it and its text under the panel") {
+    const std::string echo = "Selected Object:\n  Mass: 6.993006993006993\n  Friction: 0.300\n";
+    browser::Document document{browser::Canvas(200, 300), echo};
+    const browser::Image plain = browser::render_page(document);
+    document.echo_notes = {{"Mass:", "*", "the book's quirk"}};
+    const browser::Image noted = browser::render_page(document);
+    CHECK(document.ui_echo == echo);  // the echo itself is the book's, letter for letter
+    // The page grew by a band of one line: a gap of 5, the line of 18 and 5 under it.
+    REQUIRE(noted.width == plain.width);
+    REQUIRE(noted.height == 300 + 5 + 18 + 5);
+    // In the panel, the only change is the mark, gray, on the Mass line (the second:
+    // rows 10 + 18 to 10 + 36), after its text.
+    const int mass_text_end = 200 + 10 + browser::text_width("  Mass: 6.993006993006993");
+    int changed = 0, gray_on_mass_line = 0;
+    for (int j = 0; j < 300; ++j) {
+        for (int i = 0; i < noted.width; ++i) {
+            if (noted.at(i, j) == plain.at(i, j)) continue;
+            ++changed;
+            const bool on_mass_line = j >= 10 + 18 && j < 10 + 36 && i >= mass_text_end;
+            if (on_mass_line && noted.at(i, j) == browser::colors::kGray) ++gray_on_mass_line;
+        }
+    }
+    CHECK(changed > 0);
+    CHECK(gray_on_mass_line == changed);
+    // Under the panel, the note's line is gray ink, at the panel's left.
+    int gray_under = 0;
+    for (int j = 300; j < noted.height; ++j) {
+        for (int i = 0; i < noted.width; ++i) gray_under += noted.at(i, j) == browser::colors::kGray ? 1 : 0;
+    }
+    CHECK(gray_under > 0);
+    // An echo without the line keeps the note's band (the page keeps its height), no mark.
+    document.ui_echo = "Selected Object:\n  Id: none\n";
+    CHECK(browser::render_page(document).height == noted.height);
+}
+
+TEST_CASE("overlay: an echo longer than the panel stops at its last whole line, clear of the band under it") {
+    std::string echo;
+    for (int line = 0; line < 30; ++line) echo += "echo line\n";  // 30 lines of 18 px: more than 300 px
+    browser::Document document{browser::Canvas(200, 300), echo};
+    document.echo_notes = {{"none", "*", "a note"}};
+    const browser::Image page = browser::render_page(document);
+    // Lines start at 10, 28, ..., 280, 298: a line is drawn when its 18 px end by 305, where
+    // the band's first line starts; the one at 280 does (298), the one at 298 does not
+    // (316). So the panel's rows from the canvas's bottom to the band's line are white.
+    for (int j = 300; j < 305; ++j) {
+        for (int i = 200; i < page.width; ++i) REQUIRE(page.at(i, j) == browser::colors::kWhite);
+    }
+    int black_under = 0;  // and the band holds the note alone, gray
+    for (int j = 300; j < page.height; ++j) {
+        for (int i = 200; i < page.width; ++i) black_under += page.at(i, j) == browser::colors::kBlack ? 1 : 0;
+    }
+    CHECK(black_under == 0);
 }
 
 TEST_CASE("overlay: numbers read as fixed decimals, never in exponent notation, never -0") {
@@ -271,4 +354,77 @@ TEST_CASE("overlay: two labels asked for one place stand apart, the second a lin
     }
     // Two lines of text: more rows than one line's glyphs reach.
     CHECK(rows_with_ink > browser::text_line_height());
+}
+
+TEST_CASE("overlay: a label asked for at the canvas's edge is moved wholly onto it, every letter drawn") {
+    const std::string text = "depth 1.50 px";
+    // The whole label, drawn in the middle: its ink.
+    browser::Canvas middle(200, 100);
+    browser::overlay::LabelLayout{}.place(middle, {50, 40}, kPurple, text);
+    bool inside = false;
+    const int whole = inkInside(middle, kPurple, 2, inside);
+    REQUIRE(whole > 0);
+    // Asked for past each corner and edge: the same ink, all of it 2 px inside the edges.
+    for (const Vec2 at : {Vec2{-20, -30}, Vec2{190, 95}, Vec2{-20, 95}, Vec2{190, -30}, Vec2{100, 99}, Vec2{199, 40}}) {
+        browser::Canvas canvas(200, 100);
+        browser::overlay::LabelLayout{}.place(canvas, at, kPurple, text);
+        INFO("asked for (" << at.x << ", " << at.y << ")");
+        CHECK(inkInside(canvas, kPurple, 2, inside) == whole);
+        CHECK(inside);
+    }
+}
+
+TEST_CASE("overlay: labels crowded at the canvas's foot stand apart above each other, all on the canvas") {
+    const std::string text = "depth 1.50 px";
+    browser::Canvas middle(200, 100);
+    browser::overlay::LabelLayout{}.place(middle, {50, 40}, kPurple, text);
+    bool inside = false;
+    const int one = inkInside(middle, kPurple, 2, inside);
+    // Three labels asked for one spot below the canvas: the first stands at its foot, the
+    // others a line higher each, since lower would leave the canvas; the ink of all three
+    // is three labels' (none covers another), all inside.
+    browser::Canvas canvas(200, 100);
+    browser::overlay::LabelLayout labels;
+    for (int label = 0; label < 3; ++label) labels.place(canvas, {10, 120}, kPurple, text);
+    CHECK(inkInside(canvas, kPurple, 2, inside) == 3 * one);
+    CHECK(inside);
+    int top_ink_row = canvas.height();
+    for (int j = 0; j < canvas.height() && top_ink_row == canvas.height(); ++j) {
+        for (int i = 0; i < canvas.width(); ++i) {
+            if (canvas.pixels().at(i, j) == kPurple) {
+                top_ink_row = j;
+                break;
+            }
+        }
+    }
+    // Three lines of 18 px stacked on the foot (100 - 2): the top one starts at 44 or
+    // lower, and its ink a few px under its top.
+    CHECK(top_ink_row >= 100 - 2 - 3 * browser::text_line_height());
+    CHECK(top_ink_row < 100 - 2 - 2 * browser::text_line_height());
+}
+
+TEST_CASE("overlay: the page keeps room for every layer's legend only in a run where every layer can come on") {
+    const auto possible = [](std::vector<std::string> arguments) {
+        const auto parsed = parse(std::move(arguments), kWithOverlay);
+        REQUIRE(parsed.options);
+        return browser::Window(*parsed.options).every_layer_possible;
+    };
+    CHECK_FALSE(possible({}));
+    CHECK_FALSE(possible({"--overlay"}));           // the own layer, all the run
+    CHECK_FALSE(possible({"--keys", "t"}));         // off -> own
+    CHECK(possible({"--keys", "t t@1"}));           // off -> own -> every layer
+    CHECK(possible({"--overlay", "--keys", "t"}));  // own -> every layer
+    CHECK(possible({"--overlay-all"}));
+    // A key pressed that the script did not hold (a live session's) takes it there too,
+    // and the page keeps the room from then on.
+    const auto live = parse({}, kWithOverlay);
+    REQUIRE(live.options);
+    browser::Window window(*live.options);
+    CountingScripts scripts;
+    browser::press_key(scripts, window, *live.options, browser::kOverlayKey);
+    CHECK_FALSE(window.every_layer_possible);
+    browser::press_key(scripts, window, *live.options, browser::kOverlayKey);
+    CHECK(window.every_layer_possible);
+    browser::press_key(scripts, window, *live.options, browser::kOverlayKey);  // off again: the room stays
+    CHECK(window.every_layer_possible);
 }

@@ -1,6 +1,9 @@
 // The overlay of the collision info (3.2 on; from 4.3 on the book no longer draws it):
 // markers at the start and the end of the overlap and the normal drawn from the start,
 // each in the colour the legend gives it, where the geometry of two circles puts them.
+// And what every layer on adds from 3.2 on: 3.1's bounding circles under the rest, and
+// a legend as long as the stage says (overlay.h's kLegendEntries), which the page's
+// band is made for.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +12,9 @@
 #include "circle.h"
 #include "expect.h"
 #include "legend_color.h"
+#include "overlay.h"
+#include "page.h"
+#include "rectangle.h"
 #include "stage_fixture.h"
 
 namespace collision_overlay_test {
@@ -27,11 +33,27 @@ struct Page {
     browser::Window window{test::kFrameMs};
     engine::Core core{window, atRest(engine::kBookWorld)};
 };
+// Every layer's condition on, as far as the stage has it: the grid (5.2 on), sleeping
+// (5.5 on) and the sequential impulse solver (5.4 on) each add their lines to the legend
+// only while they run.
+template <class Settings>
+Settings everyLayerRuns(Settings settings) {
+    settings = atRest(settings);
+    if constexpr (requires { settings.broad_phase; }) settings.broad_phase = decltype(settings.broad_phase)::grid;
+    if constexpr (requires { settings.sleep; }) settings.sleep = true;
+    if constexpr (requires { settings.solver; }) settings.solver = decltype(settings.solver)::sequential_impulse;
+    return settings;
+}
+struct EveryLayerPage {
+    browser::Window window{test::kFrameMs};
+    engine::Core core{window, everyLayerRuns(engine::kBookWorld)};
+};
 #else
 struct Page {
     browser::Window window{test::kFrameMs};
     engine::Core core{window};
 };
+using EveryLayerPage = Page;
 #endif
 
 TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in the legend's colours") {
@@ -62,6 +84,67 @@ TEST_CASE("collision overlay: start, end and normal of two circles' overlap, in 
                                       [](const auto& entry) { return entry.text == "colliding pairs: 1"; });
     test::expectEqual("the legend's line \"colliding pairs: 1\" (one pair collides)", true,
                       counted != document.legend.end());
+}
+
+TEST_CASE("collision overlay: every layer on adds 3.1's bounding circles; the stage's own layer alone does not") {
+    Page page;
+    // A 60 x 80 px rectangle on the pixel centre (400.5, 300.5): its bounding circle, half
+    // its diagonal, has the radius 50, and crosses the row y = 300.5 at x = 450.5, 25 px
+    // right of the rectangle's side, where nothing else is drawn.
+    page.core.add(engine::Rectangle({400.5, 300.5}, 60, 80));
+    page.window.overlay = true;
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
+    const auto bounds = [](const browser::Document& document) {
+        return std::count_if(document.legend.begin(), document.legend.end(),
+                             [](const auto& entry) { return entry.text.starts_with("bounding circle"); });
+    };
+    test::expectEqual("lines of the legend naming bounding circles, the stage's own layer alone", 0,
+                      bounds(page.window.document));
+    page.window.overlay_all = true;
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
+    const browser::Document& document = page.window.document;
+    test::expectEqual("lines of the legend naming bounding circles, every layer on", 1, bounds(document));
+    test::expectEqual("pixel (450, 300), on the rectangle's bounding circle (radius 50 = half its diagonal)",
+                      test::legendColor(document, "bounding circle"), document.canvas.pixels().at(450, 300));
+    test::expectEqual("pixel (455, 300), 5 px outside the bounding circle", browser::colors::kWhite,
+                      document.canvas.pixels().at(455, 300));
+}
+
+TEST_CASE(
+    "collision overlay: the legend has the stage's kOwnLegendEntries lines with its own layer, kLegendEntries with "
+    "every layer, as tall as its band") {
+    EveryLayerPage page;
+    page.core.add(engine::Circle({200.5, 100.5}, 20));
+    page.core.add(engine::Circle({230.5, 100.5}, 20));
+    page.core.add(engine::Rectangle({400.5, 300.5}, 60, 80));
+    page.window.overlay = true;
+    for (int frame = 0; frame < 3; ++frame) {
+        page.window.clock.advanceFrame();
+        page.core.runGameLoop();
+    }
+    test::expectEqual("lines of the legend with the stage's own layer, running (overlay.h's kOwnLegendEntries)",
+                      engine::kOwnLegendEntries, page.window.document.legend.size());
+    test::expectEqual("the entries the page's band is made for in a run that shows the own layer alone",
+                      engine::kOwnLegendEntries, page.window.document.legend_entries);
+    page.window.overlay_all = true;
+    page.window.every_layer_possible = true;
+    page.window.clock.advanceFrame();
+    page.core.runGameLoop();
+    const browser::Document& document = page.window.document;
+    test::expectEqual("lines of the legend with every layer on and running (overlay.h's kLegendEntries)",
+                      engine::kLegendEntries, document.legend.size());
+    test::expectEqual("the entries the page's band is made for in a run where every layer can come on",
+                      engine::kLegendEntries, document.legend_entries);
+    // The band under the page is as tall as those entries' rows, and no taller.
+    browser::Document without = document;
+    without.legend.clear();
+    without.legend_room = false;
+    test::expectEqual(
+        "the page's height with the legend, less the page's without it",
+        browser::legend_band_height(engine::kLegendEntries, document.canvas.width() + browser::kPanelWidth),
+        browser::render_page(document).height - browser::render_page(without).height);
 }
 
 }  // namespace collision_overlay_test

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "expect.h"
+#include "overlay.h"
+#include "page.h"
 #include "png_io.h"
 #include "stage_program.h"
 
@@ -62,6 +64,18 @@ TEST_CASE(
                       option_then_key.rgba == option_all.rgba);
     test::expectEqual("the picture with --overlay-all and then T: the book's, the legend's room under it blank", true,
                       bookWithRoom(all_then_key, book));
+}
+
+TEST_CASE("overlay key: the legend's band under the page is as tall as the largest legend the run can show needs") {
+    test::ScratchFolder folder("overlay_band");
+    const browser::Image book = finalPicture(folder, "book", "--keys \"f g\"");
+    const browser::Image all = finalPicture(folder, "all", "--overlay-all --keys \"f g\"");
+    const browser::Image own = finalPicture(folder, "own", "--overlay --keys \"f g\"");
+    // The page is the canvas and the panel (page.h) at scale 1: its width is theirs.
+    test::expectEqual("the band's height: the page's with every layer on, less the book's page",
+                      browser::legend_band_height(engine::kLegendEntries, book.width), all.height - book.height);
+    test::expectEqual("the band's height: the page's with its own layer alone, less the book's page",
+                      browser::legend_band_height(engine::kOwnLegendEntries, book.width), own.height - book.height);
 }
 
 }  // namespace overlay_key_test

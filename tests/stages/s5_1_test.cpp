@@ -242,7 +242,10 @@ TEST_CASE("s5_1: the default run writes an animated GIF of the whole page") {
         return static_cast<unsigned char>(gif[at]) | static_cast<unsigned char>(gif[at + 1]) << 8;
     };
     test::expectEqual("the GIF's width, px: the canvas and the echo panel", 800 + browser::kPanelWidth, u16(6));
-    test::expectEqual("the GIF's height, px", 450, u16(8));
+    // The canvas, 450 px, and under it the band of the page's note on the echo's mass
+    // (main.cpp's echo_notes): a gap of 5, its two lines of 18 px, and 5 under them.
+    test::expectEqual("the GIF's height, px: the canvas and the band of the note on the mass", 450 + 5 + 2 * 18 + 5,
+                      u16(8));
 }
 
 TEST_CASE(
