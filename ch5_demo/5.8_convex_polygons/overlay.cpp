@@ -26,6 +26,8 @@ struct Sheet {
 
 // Colours none of the book's drawing uses (blue, red, green, orange), so the overlay
 // never reads as the page's own.
+constexpr Color kBoundColor{150, 150, 150, 255};  // gray: the bounding circles
+
 constexpr Color kStartColor{0, 150, 150, 255};   // teal: where the overlap starts
 constexpr Color kEndColor{160, 0, 200, 255};     // purple: where it ends
 constexpr Color kNormalColor{200, 0, 120, 255};  // crimson: the normal
@@ -43,6 +45,18 @@ constexpr Color kSweepColor{120, 220, 0, 255};  // lime: the sweep of a fast sha
 
 // The normal is a unit vector: drawn this long, whatever the depth.
 constexpr double kNormalLength = 20.0;  // px
+
+// 3.1's layer, under every later one: the bounding circle of every rectangle (a
+// circle's is its own outline), which the broad phase compares before a pair gets the
+// exact test.
+void drawBounds(Sheet& sheet, const Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const RigidShape& shape = core.object(i);
+        if (shape.type() == ShapeType::Rectangle)
+            draw::ring(sheet.canvas, shape.center(), shape.boundRadius(), kBoundColor);
+    }
+    sheet.legend.push_back({kBoundColor, "bounding circle of a rectangle"});
+}
 
 // The collision info of every pair the last pass found: start, end, the normal from the
 // start, and the depth beside the end.
@@ -172,12 +186,15 @@ void drawSweeps(Sheet& sheet, const Core& core) {
 void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
+    window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    // 5.7's own layer is the events (events_overlay.h). Every layer adds the grid, 5.5's
-    // islands, chapter 3's and 4's layers, 5.4's contacts and 5.6's sweeps.
+    // 5.7's own layer is the events (events_overlay.h). Every layer adds the bounding
+    // circles, the grid, 5.5's islands, chapter 3's and 4's layers, 5.4's contacts and
+    // 5.6's sweeps.
     const bool all = window.overlay_all;
     if (all) {
+        drawBounds(sheet, core);
         drawGrid(sheet.canvas, core, legend);
         drawIslands(sheet.canvas, sheet.labels, core, legend);
         drawCollisionInfo(sheet, core);

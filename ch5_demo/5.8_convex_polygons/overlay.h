@@ -50,10 +50,19 @@
 // 5.7's collision events add their own (events_overlay.h): each begin, end and hit
 // where it happened, for half a second, and their counts.
 
+#include <cstddef>
+
 #include "browser.h"
 #include "core.h"
 
 namespace engine {
+
+// The most entries the overlay's legend holds, with the stage's own layer alone and with
+// every layer on: the page keeps a band for that many under it (page.h's
+// Document::legend_entries), the second in a run where every layer can come on, so that
+// every picture of a run has one height, whichever layers are on.
+inline constexpr std::size_t kOwnLegendEntries = 4;
+inline constexpr std::size_t kLegendEntries = 31;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.
