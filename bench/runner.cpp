@@ -14,12 +14,12 @@ struct Runs {
     Metrics metrics;
     long steps = 0;
     double cost_us = 0.0;
-    std::optional<double> candidate_pairs;  // per step
-    std::optional<double> narrow_tests;     // per step
-    std::optional<double> skipped_tests;    // per step
-    std::optional<double> passes;           // per step
+    std::optional<double> candidate_pairs;          // per step
+    std::optional<double> narrow_tests;             // per step
+    std::optional<double> skipped_tests;            // per step
+    std::optional<double> passes;                   // per step
     std::optional<BenchWorld::EventCounts> events;  // per step
-    int repeats = 0;                        // timed runs made
+    int repeats = 0;                                // timed runs made
 };
 
 // The counts of a world's steps so far, per step.
@@ -90,8 +90,8 @@ Row stage_row(const RowSource& source, const Setting& setting, int repeats, cons
     return setting_row(source, setting, runs);
 }
 
-std::array<Row, 2> paired_rows(const RowSource& source, const std::array<Setting, 2>& settings, int repeats,
-                               long steps, const Look& look) {
+std::array<Row, 2> paired_rows(const RowSource& source, const std::array<Setting, 2>& settings, int repeats, long steps,
+                               const Look& look) {
     if (repeats < 1 || steps < 1) throw std::invalid_argument("paired_rows: repeats and steps must be at least 1");
     std::array<Runs, 2> runs;
     std::array<std::vector<double>, 2> costs;

@@ -44,8 +44,8 @@ Row stage_row(const RowSource& source, const Setting& setting, int repeats, cons
 // errors are what `look` finds in each world after its first run.
 inline constexpr long kTurnSteps = 30;
 using Look = std::function<Metrics(const BenchWorld& world)>;
-std::array<Row, 2> paired_rows(const RowSource& source, const std::array<Setting, 2>& settings, int repeats,
-                               long steps, const Look& look);
+std::array<Row, 2> paired_rows(const RowSource& source, const std::array<Setting, 2>& settings, int repeats, long steps,
+                               const Look& look);
 // Box2D with the scene's world; nothing in a build without Box2D.
 std::optional<Row> box2d_row(const RowSource& source, int repeats, const Measure& measure);
 

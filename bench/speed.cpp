@@ -257,15 +257,16 @@ StudyResult speed_study(const StudyContext& context) {
                ", " + against(ratio, kBox2dTarget, true) + ")";
     }
     result.key_figures.push_back(key + ".");
-    std::string events_key = "Events (5.7): on the rain of 1000, a game reading every step's collision events "
-                             "makes a step cost";
+    std::string events_key =
+        "Events (5.7): on the rain of 1000, a game reading every step's collision events "
+        "makes a step cost";
     for (std::size_t k = 0; k < events.extra.size(); ++k) {
         const double extra = events.extra[k].second;
-        events_key += std::string(k == 0 ? " " : ", and ") + EventCosts::signed_percent(extra) + " with the " +
-                      events.extra[k].first + " (target at most +" + figure(kEventsTarget) + "%, " +
-                      (extra <= kEventsTarget ? std::string("met")
-                                              : "missed by " + figure(extra - kEventsTarget) + " points") +
-                      ")";
+        events_key +=
+            std::string(k == 0 ? " " : ", and ") + EventCosts::signed_percent(extra) + " with the " +
+            events.extra[k].first + " (target at most +" + figure(kEventsTarget) + "%, " +
+            (extra <= kEventsTarget ? std::string("met") : "missed by " + figure(extra - kEventsTarget) + " points") +
+            ")";
     }
     result.key_figures.push_back(events_key + ".");
     result.markdown =
@@ -285,8 +286,7 @@ StudyResult speed_study(const StudyContext& context) {
         figure(kBookJsPer51) +
         " times 5.1's cost "
         "on the rain of 400.\n\n" +
-        rain.table +
-        "\nWhat 5.7's collision events cost (issue 37: at most " + figure(kEventsTarget) +
+        rain.table + "\nWhat 5.7's collision events cost (issue 37: at most " + figure(kEventsTarget) +
         "% more a step): the same rain of 1000 on 5.7, its own world (sleeping and continuous collision on), with "
         "no one reading its events, when the step keeps none, and with a game reading them after every step, going "
         "through the step's list and counting each event by kind. The two worlds take turns " +

@@ -54,7 +54,7 @@ double substeps(const Settings& settings) {
 // Core::keepEvents, contact_events.h).
 template <class Core>
 constexpr bool tells_events() {
-    return requires(Core& core) {
+    return requires(Core & core) {
         core.keepEvents(true);
         core.events().events();
     };
@@ -148,7 +148,7 @@ protected:
 private:
     browser::Window window_;
     engine::Core core_;
-    std::optional<PairCounts> totals_;  // over steps_ steps; none where the stage counts none
+    std::optional<PairCounts> totals_;   // over steps_ steps; none where the stage counts none
     std::optional<EventCounts> events_;  // over steps_ steps; none where no one reads them
     long steps_ = 0;
 };

@@ -139,9 +139,9 @@ private:
     // (0 for an empty slot), at most half full, each pair in the first free slot from
     // where its ids hash to. A lookup costs about the same however many pairs touch;
     // sorting every pass's reports to find the first of each cost a rain of 1000 a
-    // quarter of its step (bench: the speed study).
+    // fifth of its step (bench: the speed study).
     std::vector<std::uint32_t> first_report_;
-    std::vector<BodyId> ids_;  // the shapes' ids at the end of the step, in the list's order
+    std::vector<BodyId> ids_;      // the shapes' ids at the end of the step, in the list's order
     std::vector<Touch> touching_;  // the pairs touching, by pair
     std::vector<Touch> next_;      // endStep's new touching_, swapped in
     std::vector<ContactEvent> events_;
