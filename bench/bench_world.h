@@ -58,6 +58,16 @@ public:
     };
     virtual std::optional<PairCounts> pair_counts() const { return std::nullopt; }
 
+    // The collision events a game read after each step, per fixed step on average over
+    // every step run (timed or not): nothing where no one reads them (5.7 on, with
+    // WorldDescription::events on, is the only engine that tells them).
+    struct EventCounts {
+        double begins = 0.0;
+        double ends = 0.0;
+        double hits = 0.0;
+    };
+    virtual std::optional<EventCounts> event_counts() const { return std::nullopt; }
+
     // How many of the moving bodies are awake, where the engine sleeps (Box2D with its
     // sleeping on, for 5.5's studies); nothing where it does not say.
     virtual std::optional<std::size_t> awake_count() const { return std::nullopt; }

@@ -64,6 +64,7 @@ const std::vector<CsvColumn>& columns() {
         {"restitution_threshold", [](const Row& r) { return number(r.world.restitution_threshold); }},
         {"sleep", [](const Row& r) { return on_off(r.world.sleep); }},
         {"continuous", [](const Row& r) { return on_off(r.world.continuous); }},
+        {"events", [](const Row& r) { return on_off(r.world.events); }},
         {"steps", [](const Row& r) { return std::to_string(r.steps); }},
         {"repeats", [](const Row& r) { return std::to_string(r.repeats); }},
         {"cost_us", [](const Row& r) { return number(r.cost_us); }},
@@ -73,6 +74,9 @@ const std::vector<CsvColumn>& columns() {
         {"narrow_tests", [](const Row& r) { return number(r.narrow_tests); }},
         {"skipped_tests", [](const Row& r) { return number(r.skipped_tests); }},
         {"passes", [](const Row& r) { return number(r.passes); }},
+        {"begins", [](const Row& r) { return r.events ? number(r.events->begins) : ""; }},
+        {"ends", [](const Row& r) { return r.events ? number(r.events->ends) : ""; }},
+        {"hits", [](const Row& r) { return r.events ? number(r.events->hits) : ""; }},
         {"penetration_max", [](const Row& r) { return number(r.metrics.penetration_max); }},
         {"penetration_mean", [](const Row& r) { return number(r.metrics.penetration_mean); }},
         {"top_drift", [](const Row& r) { return number(r.metrics.top_drift); }},
@@ -119,8 +123,9 @@ std::string results_markdown(const RunFacts& facts, const std::vector<StudyResul
             (facts.repeats == 1 ? " timed run" : " timed runs") +
             " per setting, each on a fresh world, errors from the first. Every row names the engine that made it: "
             "stage 5.1 (the book's), 5.2 (+ the broad phase, its grid by default), 5.3 (+ the knobs), "
-            "5.4 (+ a contact solver), 5.5 (+ sleeping, on by default), 5.6 (+ continuous collision, on by default) "
-            "or Box2D; a setting runs on the oldest stage that can express it. "
+            "5.4 (+ a contact solver), 5.5 (+ sleeping, on by default), 5.6 (+ continuous collision, on by default), "
+            "5.7 (+ collision events, kept only while read: its rows are the speed study's) or Box2D; a setting runs "
+            "on the oldest stage that can express it. "
             "Everything runs on one core, one setting after another. To keep the whole run within a few minutes, each "
             "scene runs only as long "
             "as its figure needs (stated per section): the pyramids 10 s of simulated time, the rains 6 s, the gas "

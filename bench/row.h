@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "bench_world.h"
 #include "scene_description.h"
 #include "stages.h"
 
@@ -45,6 +46,8 @@ struct Row {
     std::optional<double> narrow_tests;
     std::optional<double> skipped_tests;
     std::optional<double> passes;
+    // Per fixed step, the collision events the game read (5.7 on, events on).
+    std::optional<BenchWorld::EventCounts> events;
     Metrics metrics;
 
     double steps_per_second() const { return 1e6 / cost_us; }

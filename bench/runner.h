@@ -7,6 +7,7 @@
 // over many steps, and the whole bench must stay within minutes. The row says how many
 // runs its cost is the median of.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -35,6 +36,16 @@ struct RowSource {
 
 // The setting's stage with the setting's world in place of the scene's.
 Row stage_row(const RowSource& source, const Setting& setting, int repeats, const Measure& measure);
+// Two settings of one scene, timed side by side where a difference of a few per cent is
+// the figure: in each of `repeats` runs a fresh world of each runs `steps` steps, the two
+// taking turns kTurnSteps steps at a time, each first in every other turn, so that a
+// busy moment of the shared machine falls on both alike (run one after the other, a few per cent comes and goes with the
+// load). Each cost is the median of its runs (every one made: no kRepeatSeconds); the
+// errors are what `look` finds in each world after its first run.
+inline constexpr long kTurnSteps = 30;
+using Look = std::function<Metrics(const BenchWorld& world)>;
+std::array<Row, 2> paired_rows(const RowSource& source, const std::array<Setting, 2>& settings, int repeats, long steps,
+                               const Look& look);
 // Box2D with the scene's world; nothing in a build without Box2D.
 std::optional<Row> box2d_row(const RowSource& source, int repeats, const Measure& measure);
 

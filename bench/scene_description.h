@@ -59,6 +59,10 @@ struct WorldDescription {
     std::optional<double> restitution_threshold;    // 5.4, px/s
     std::optional<bool> sleep;                      // 5.5 on
     std::optional<bool> continuous;                 // 5.6
+    // Not a key of a scene file but what the program around the engine does: true, a
+    // game reads the step's collision events after every step (5.7 on, which keeps them
+    // only while someone reads them); false or unset, no one does.
+    std::optional<bool> events;  // 5.7
 
     friend bool operator==(const WorldDescription&, const WorldDescription&) = default;
 };

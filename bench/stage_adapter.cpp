@@ -3,8 +3,8 @@
 // path and defines `engine` as a name of its own (engine_s5_1, ...), and with
 // BENCH_STAGE_ENGINE as the factory to define (s5_1_engine, ...); bench/CMakeLists.txt
 // says why. Where the stages differ (5.1
-// counts no pairs, 5.3 has sub-steps), the code asks the stage's types what they have
-// rather than which stage it is.
+// counts no pairs, 5.3 has sub-steps, 5.7 tells collision events), the code asks the
+// stage's types what they have rather than which stage it is.
 
 #include <cmath>
 #include <optional>
@@ -50,13 +50,52 @@ double substeps(const Settings& settings) {
     }
 }
 
+// Whether the stage's core tells collision events to whoever reads them (5.7 on:
+// Core::keepEvents, contact_events.h).
+template <class Core>
+constexpr bool tells_events() {
+    return requires(Core & core) {
+        core.keepEvents(true);
+        core.events().events();
+    };
+}
+
+// Asks the core to keep its events for a reader (the program's, as --events FILE does).
+template <class Core>
+void start_reading_events(Core& core) {
+    if constexpr (tells_events<Core>()) core.keepEvents(true);
+}
+
+// What a game does with the step's events, at the least: goes through the list and
+// looks at each (here, its kind), so that the cost timed is a reader's.
+template <class Core>
+void read_events(const Core& core, BenchWorld::EventCounts& counts) {
+    if constexpr (tells_events<Core>()) {
+        for (const auto& event : core.events().events()) {
+            using Kind = decltype(event.kind);
+            switch (event.kind) {
+                case Kind::begin: counts.begins += 1; break;
+                case Kind::end: counts.ends += 1; break;
+                case Kind::hit: counts.hits += 1; break;
+            }
+        }
+    }
+}
+
 class StageWorld final : public BenchWorld {
 public:
-    StageWorld(const engine::WorldSettings& settings, const std::vector<engine::BodyDescription>& bodies)
+    // With `read_events`, the step's collision events are read after every step (the
+    // stage must tell them: world() checks).
+    StageWorld(const engine::WorldSettings& settings, const std::vector<engine::BodyDescription>& bodies,
+               bool read_events)
         : window_(settings.dt * 1000.0,
                   browser::Document{browser::Canvas(pixels(settings.width), pixels(settings.height))}),
           core_(window_, settings) {
         engine::buildScene(core_, bodies);
+        if (read_events) {
+            start_reading_events(core_);
+            events_ = EventCounts{};
+        }
     }
 
     Snapshot snapshot() const override {
@@ -81,6 +120,12 @@ public:
                           totals_->passes / steps};
     }
 
+    std::optional<EventCounts> event_counts() const override {
+        if (!events_ || steps_ == 0) return std::nullopt;
+        const auto steps = static_cast<double>(steps_);
+        return EventCounts{events_->begins / steps, events_->ends / steps, events_->hits / steps};
+    }
+
 protected:
     void advance(long steps) override {
         // The physics counts what its last collision pass did, which with sub-steps is
@@ -95,6 +140,7 @@ protected:
                 totals_->skipped_tests += looks * pairs->skipped_tests;
                 totals_->passes += looks * pairs->passes;
             }
+            if (events_) read_events(core_, *events_);
         }
         steps_ += steps;
     }
@@ -102,7 +148,8 @@ protected:
 private:
     browser::Window window_;
     engine::Core core_;
-    std::optional<PairCounts> totals_;  // over steps_ steps; none where the stage counts none
+    std::optional<PairCounts> totals_;   // over steps_ steps; none where the stage counts none
+    std::optional<EventCounts> events_;  // over steps_ steps; none where no one reads them
     long steps_ = 0;
 };
 
@@ -150,8 +197,12 @@ public:
     WorldDescription book_world() const override { return book_keys_of(engine::kBookWorld); }
 
     std::unique_ptr<BenchWorld> world(const SceneDescription& scene) const override {
+        const bool read_events = scene.world.events.value_or(false);
+        if (read_events && !has_events()) {
+            throw browser::SceneError(std::string(kSource) + ": events read after every step: this stage tells none");
+        }
         const engine::Scene read = engine::readScene(scene_json(scene), kSource);
-        return std::make_unique<StageWorld>(read.world, read.bodies);
+        return std::make_unique<StageWorld>(read.world, read.bodies, read_events);
     }
 
     SceneDescription read_scene(const std::string& text, std::string_view source) const override {
@@ -162,8 +213,10 @@ public:
     }
 
     bool same_settings(const WorldDescription& a, const WorldDescription& b) const override {
-        return settings_of(a) == settings_of(b);
+        return settings_of(a) == settings_of(b) && a.events.value_or(false) == b.events.value_or(false);
     }
+
+    bool has_events() const override { return tells_events<engine::Core>(); }
 };
 
 }  // namespace

@@ -25,7 +25,8 @@ public:
     virtual WorldDescription book_world() const = 0;
     // The stage's engine with the scene built, its world read from the scene's JSON by the
     // stage's own world keys. Throws browser::SceneError, in the words of the stage's
-    // program, for a key the stage does not read or a value it refuses.
+    // program, for a key the stage does not read or a value it refuses, and for events
+    // read (WorldDescription::events) on a stage that has none.
     virtual std::unique_ptr<BenchWorld> world(const SceneDescription& scene) const = 0;
     // A scene's text read as the stage's program reads a scene file, in the bench's terms:
     // the book's world keys and the bodies. `source` stands for the file in a refusal.
@@ -34,6 +35,9 @@ public:
     // Whether the stage reads the two worlds as the same settings: a key left unset is the
     // same as the stage's default written out. Throws browser::SceneError as world() does.
     virtual bool same_settings(const WorldDescription& a, const WorldDescription& b) const = 0;
+    // Whether the stage tells collision events that a game may read after each step
+    // (WorldDescription::events): 5.7 on.
+    virtual bool has_events() const = 0;
 };
 
 // One per stage of bench_stage_list.h (s5_1_engine, ...), each defined by the adapter

@@ -16,8 +16,9 @@ bool contains(const std::vector<std::string>& names, std::string_view name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// Whether the stage reads every key `world` sets.
+// Whether the stage reads every key `world` sets, and tells events if they are to be read.
 bool reads_all(const StageEngine& stage, const WorldDescription& world) {
+    if (world.events && !stage.has_events()) return false;
     const std::vector<std::string> keys = stage.world_keys();
     const std::vector<WorldEntry> entries = world_entries(world);
     return std::all_of(entries.begin(), entries.end(),
@@ -86,6 +87,8 @@ std::optional<Stage> oldest_expressing(const std::vector<Stage>& stages, const W
     return std::nullopt;
 }
 
+bool runs_scene_as_stage_before(Stage stage) { return stage == Stage::s5_4 || stage == Stage::s5_7; }
+
 WorldDescription resolved(Stage stage, const WorldDescription& world) {
     if (stage == Stage::box2d) return world;
     const std::unique_ptr<StageEngine> adapter = stage_engine(stage);
@@ -106,6 +109,7 @@ WorldDescription resolved(Stage stage, const WorldDescription& world) {
     write_default(*adapter, &W::restitution_threshold, {30.0, 0.0}, written);
     write_default(*adapter, &W::sleep, {true, false}, written);
     write_default(*adapter, &W::continuous, {true, false}, written);
+    write_default(*adapter, &W::events, {false, true}, written);
     return written;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Which engine makes a row: one of the stages stages.txt marks "bench" (5.1 to 5.6),
+// Which engine makes a row: one of the stages stages.txt marks "bench" (5.1 to 5.7),
 // each the engine of its own folder, or Box2D as the reference (box2d_world.h). What a
 // stage can vary is what its scene files may say: the bench asks the stage for its
 // world keys rather than keeping a table of its own.
@@ -45,11 +45,17 @@ std::unique_ptr<BenchWorld> stage_world(Stage stage, const SceneDescription& sce
 // The book's world (the book's keys, as stage 5.1 has them).
 WorldDescription book_world();
 
-// Whether the stage reads every key `world` sets.
+// Whether the stage reads every key `world` sets (and tells events, if `world` reads them).
 bool can_express(Stage stage, const WorldDescription& world);
 
 // The oldest of `stages` that can express `world`; nothing when none can.
 std::optional<Stage> oldest_expressing(const std::vector<Stage>& stages, const WorldDescription& world);
+
+// Whether the stage runs a scene's own world as the stage before it does, bit for bit
+// (its identity test), so that a "scene" row of it would repeat the one before: 5.4,
+// whose solver is the book's unless a scene says otherwise, and 5.7, which keeps
+// collision events only while someone reads them, and a scene alone reads none.
+bool runs_scene_as_stage_before(Stage stage);
 
 // `world` with every key the stage reads written out: a key left unset becomes the
 // stage's own default, found among the values the bench knows for it. Two worlds that

@@ -9,7 +9,7 @@
 // One at a time, so each row says what that one knob does. Each setting runs on the
 // oldest stage of the study that can express it (stages.h): passes, correction and dt
 // on the book's 5.1, the broad phase on 5.2, the rest on 5.3, the solver on 5.4 and
-// sleep on 5.5 (5.6 adds no knob of its own here); a setting no stage of the
+// sleep on 5.5 (5.6 and 5.7 add no knob of their own here); a setting no stage of the
 // study can express is not run. A setting its stage reads as one already listed for
 // that stage (the stage's own default, say) is not run twice.
 

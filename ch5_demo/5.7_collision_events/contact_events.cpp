@@ -14,11 +14,17 @@ Vec2 surfaceVelocity(const RigidShape& shape, Vec2 point) {
 }
 
 // The shape with id `id`, or nullptr when it is gone. Shapes join the list at its end
-// with ever larger ids, and leave it without reordering it: the list is sorted by id.
-const RigidShape* shapeWithId(ShapeList shapes, BodyId id) {
-    const auto found = std::lower_bound(shapes.begin(), shapes.end(), id,
-                                        [](const auto& shape, BodyId wanted) { return shape->id() < wanted; });
-    return found != shapes.end() && (*found)->id() == id ? found->get() : nullptr;
+// with ever larger ids, and leave it without reordering it: the list is sorted by id,
+// and so is `ids`, the list's ids in its order, which the search reads: one array,
+// where reading each shape's id would fetch a shape from anywhere in memory. Each id is
+// at least one more than the one before, so `id` is at most id - ids[0] places in: just
+// there while no shape has left, and the search looks no further.
+const RigidShape* shapeWithId(ShapeList shapes, const std::vector<BodyId>& ids, BodyId id) {
+    if (ids.empty() || id < ids.front()) return nullptr;
+    const std::size_t most = std::min<std::size_t>(id - ids.front(), ids.size() - 1);
+    if (ids[most] == id) return shapes[most].get();
+    const auto found = std::lower_bound(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(most), id);
+    return *found == id ? shapes[static_cast<std::size_t>(found - ids.begin())].get() : nullptr;
 }
 
 }  // namespace
@@ -40,6 +46,7 @@ void ContactEvents::keep(EventReader reader, bool on) {
     taking_in_ = false;
     recent_.clear();
     found_.clear();
+    first_report_.clear();
     touching_.clear();
     events_.clear();
     pending_.clear();
@@ -51,8 +58,39 @@ void ContactEvents::startStep(long step) {
     events_.swap(pending_);
 }
 
+std::size_t ContactEvents::slotOf(PairIds pair) const {
+    // Two odd multipliers spread consecutive ids over the table, and the high bits, the
+    // best mixed, are folded down into the low ones that pick the slot.
+    std::uint64_t hash = pair.first * 0x9E3779B97F4A7C15ULL ^ pair.second * 0xC2B2AE3D27D4EB4FULL;
+    hash ^= hash >> 32;
+    return static_cast<std::size_t>(hash) & (first_report_.size() - 1);
+}
+
+void ContactEvents::holdReports(std::size_t reports) {
+    std::size_t size = 64;
+    while (size < 2 * reports) size *= 2;
+    first_report_.assign(size, 0);
+    for (std::size_t k = 0; k < found_.size(); ++k) {
+        std::size_t slot = slotOf(found_[k].pair);
+        while (first_report_[slot] != 0) slot = (slot + 1) & (size - 1);
+        first_report_[slot] = static_cast<std::uint32_t>(k + 1);
+    }
+}
+
+bool ContactEvents::firstReport(PairIds pair) {
+    if (2 * (found_.size() + 1) > first_report_.size()) holdReports(2 * (found_.size() + 1));
+    for (std::size_t slot = slotOf(pair);; slot = (slot + 1) & (first_report_.size() - 1)) {
+        const std::uint32_t entry = first_report_[slot];
+        if (entry == 0) {
+            first_report_[slot] = static_cast<std::uint32_t>(found_.size() + 1);
+            return true;
+        }
+        if (found_[entry - 1].pair == pair) return false;
+    }
+}
+
 void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
-    if (!kept()) return;
+    if (!kept() || !firstReport({a.id(), b.id()})) return;
     // The shapes come in list order, which is id order: the normal already points from
     // the smaller id to the larger.
     const Vec2 point = (info.start() + info.end()) * 0.5;
@@ -62,12 +100,13 @@ void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const Col
 
 void ContactEvents::sensed(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
     if (a.isSensor() && b.isSensor()) return;
+    const std::size_t reports = found_.size();
     touching(a, b, info);
-    if (kept()) found_.back().sensor = true;
+    if (found_.size() > reports) found_.back().sensor = true;
 }
 
 void ContactEvents::crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction) {
-    if (!kept()) return;
+    if (!kept() || !firstReport({std::min(mover.id(), sensor.id()), std::max(mover.id(), sensor.id())})) return;
     // Named smaller id first, the normal from it to the other: along the motion when
     // the mover is the first of the pair, against it otherwise.
     const bool mover_first = mover.id() < sensor.id();
@@ -91,16 +130,18 @@ ContactEvent ContactEvents::eventOf(EventKind kind, const Touch& touch) const {
 void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
     if (!kept()) return;
     const auto by_pair = [](const Touch& x, const Touch& y) { return x.pair < y.pair; };
-    const auto same_pair = [](const Touch& x, const Touch& y) { return x.pair == y.pair; };
-    // The book's passes report a pair in every pass that finds it: the first report is
-    // the one from before anything resolved it, with the speed the pair met at.
-    std::stable_sort(found_.begin(), found_.end(), by_pair);
-    found_.erase(std::unique(found_.begin(), found_.end(), same_pair), found_.end());
+    // found_ holds the first report of each pair (firstReport), in the order found.
+    std::sort(found_.begin(), found_.end(), by_pair);
     // A shape removed at the end of the step (out of bounds) touches nothing.
+    ids_.clear();
+    for (const auto& shape : shapes) ids_.push_back(shape->id());
     std::erase_if(found_, [&](const Touch& touch) {
-        return !shapeWithId(shapes, touch.pair.first) || !shapeWithId(shapes, touch.pair.second);
+        return !shapeWithId(shapes, ids_, touch.pair.first) || !shapeWithId(shapes, ids_, touch.pair.second);
     });
-    std::vector<Touch> now;
+    // Into the buffer of the step before last, whose memory is kept: a list of a rain's
+    // pairs, made new each step, came fresh from the system each time, page by page.
+    std::vector<Touch>& now = next_;
+    now.clear();
     now.reserve(found_.size() + touching_.size());
     auto before = touching_.begin();
     auto found = found_.begin();
@@ -108,8 +149,8 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
         if (found == found_.end() || (before != touching_.end() && before->pair < found->pair)) {
             // Not found this step: still touching if both its shapes rest, since then no
             // pass tested it, or if the step before found it; otherwise it has ended.
-            const RigidShape* a = shapeWithId(shapes, before->pair.first);
-            const RigidShape* b = shapeWithId(shapes, before->pair.second);
+            const RigidShape* a = shapeWithId(shapes, ids_, before->pair.first);
+            const RigidShape* b = shapeWithId(shapes, ids_, before->pair.second);
             if (a && b && a->isResting() && b->isResting()) {
                 now.push_back(*before);
                 now.back().missed = 0;  // asleep it is not missed, it is not looked for
@@ -133,6 +174,7 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
     }
     touching_.swap(now);
     found_.clear();
+    std::fill(first_report_.begin(), first_report_.end(), 0);
     if (taking_in_) {
         // The first step heard: what touches was touching already (nothing could end).
         events_.clear();

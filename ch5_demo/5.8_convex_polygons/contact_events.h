@@ -30,6 +30,7 @@
 // shapes leave the list. Its normal points from the first shape to the second.
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -119,6 +120,13 @@ private:
         bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
     };
     ContactEvent eventOf(EventKind kind, const Touch& touch) const;
+    // Whether this is the step's first report of the pair, which found_ keeps: the
+    // book's passes find a pair again in every pass, and the first report, from before
+    // anything resolved it, has the speed the pair met at. If so, the pair's report is
+    // to be the next one in found_.
+    bool firstReport(PairIds pair);
+    std::size_t slotOf(PairIds pair) const;
+    void holdReports(std::size_t reports);
 
     unsigned readers_ = 0;  // EventReader bits
     // A reader who starts listening after steps have run hears of what changes from
@@ -126,8 +134,16 @@ private:
     // begin (the overlay turned on with t would otherwise see every resting pair begin).
     bool taking_in_ = false;
     long step_ = 0;
-    std::vector<Touch> found_;     // this step's reports, a pair as often as a pass finds it
+    std::vector<Touch> found_;  // this step's first report of each pair found
+    // Where each pair of found_ is, looked up by its ids: a table of found_'s indices + 1
+    // (0 for an empty slot), at most half full, each pair in the first free slot from
+    // where its ids hash to. A lookup costs about the same however many pairs touch;
+    // sorting every pass's reports to find the first of each cost a rain of 1000 a
+    // fifth of its step (bench: the speed study).
+    std::vector<std::uint32_t> first_report_;
+    std::vector<BodyId> ids_;      // the shapes' ids at the end of the step, in the list's order
     std::vector<Touch> touching_;  // the pairs touching, by pair
+    std::vector<Touch> next_;      // endStep's new touching_, swapped in
     std::vector<ContactEvent> events_;
     std::vector<ContactEvent> pending_;  // the keys' since the last step
     std::vector<ContactEvent> recent_;

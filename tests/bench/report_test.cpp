@@ -105,8 +105,8 @@ TEST_CASE("MarkdownTable: a header line, a rule, a line per row") {
 
 TEST_CASE("a study's rows: one CSV line per setting, the scene's own on each stage first") {
     // The quick slide: its own world on 5.1, 5.2, 5.3, 5.5 and 5.6 (5.4 runs it as 5.3,
-    // bit for bit, and has no row for it; 5.5 and 5.6 sleep and sweep fast shapes unless
-    // told not to), then one other value of each knob it varies, on the
+    // bit for bit, and 5.7 as 5.6, and neither has a row for it; 5.5 and 5.6 sleep and
+    // sweep fast shapes unless told not to), then one other value of each knob it varies, on the
     // oldest stage that has it: passes and dt on 5.1; friction model, sub-steps,
     // integrator and rotation on 5.3; the sequential impulse solver on 5.4.
     const bench::StudyContext context{.quick = true, .repeats = 1, .scenes_dir = BENCH_SCENES_DIR};

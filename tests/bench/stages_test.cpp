@@ -34,6 +34,7 @@ TEST_CASE("stages: each row's stage by name") {
     CHECK(bench::stage_name(Stage::s5_2) == "5.2");
     CHECK(bench::stage_name(Stage::s5_3) == "5.3");
     CHECK(bench::stage_name(Stage::s5_6) == "5.6");
+    CHECK(bench::stage_name(Stage::s5_7) == "5.7");
     CHECK_THROWS_AS(bench::stage_engine(Stage::box2d), std::invalid_argument);
 }
 
@@ -100,6 +101,40 @@ TEST_CASE("stages: resolved writes out each stage's own defaults, and only its k
     const WorldDescription s5_6 = bench::resolved(Stage::s5_6, book);
     CHECK(s5_6.sleep == true);
     CHECK(s5_6.continuous == true);
+    CHECK_FALSE(s5_6.events);
+    // No one reads 5.7's events unless the bench says so.
+    const WorldDescription s5_7 = bench::resolved(Stage::s5_7, book);
+    CHECK(s5_7.continuous == true);
+    CHECK(s5_7.events == false);
+}
+
+TEST_CASE("stages: events are read on 5.7 alone, and reading them changes no shape's motion") {
+    const WorldDescription read = with([](WorldDescription& w) { w.events = true; });
+    const std::vector<Stage> all{bench::kChapter5Stages.begin(), bench::kChapter5Stages.end()};
+    CHECK_FALSE(bench::can_express(Stage::s5_6, read));
+    CHECK(bench::oldest_expressing(all, read) == Stage::s5_7);
+    CHECK(bench::runs_scene_as_stage_before(Stage::s5_7));
+    CHECK_FALSE(bench::runs_scene_as_stage_before(Stage::s5_6));
+    bench::SceneDescription rain = bench::scenes::rain(100);
+    rain.world.events = true;
+    CHECK_THROWS_WITH(bench::stage_world(Stage::s5_6, rain),
+                      "stage 5.6: the bench's scene: events read after every step: this stage tells none");
+    // A rain of 100 for 3 s: the shapes land (begins, each fall faster than 10 px/s a
+    // hit) and settle; every pair that ended had begun.
+    constexpr long kSteps = 180;
+    const auto heard = bench::stage_world(Stage::s5_7, rain);
+    heard->run(kSteps);
+    rain.world.events = false;
+    const auto unheard = bench::stage_world(Stage::s5_7, rain);
+    unheard->run(kSteps);
+    CHECK(same_positions(heard->snapshot(), unheard->snapshot()));
+    CHECK_FALSE(unheard->event_counts());
+    REQUIRE(heard->event_counts());
+    const bench::BenchWorld::EventCounts counts = *heard->event_counts();
+    CHECK(counts.begins * kSteps >= 100);  // each of the 100 shapes lands on something
+    CHECK(counts.ends <= counts.begins);
+    CHECK(counts.hits > 0);
+    CHECK(counts.hits <= counts.begins);
 }
 
 TEST_CASE("stages: the three engines move a rain alike, each in its own namespace") {
