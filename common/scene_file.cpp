@@ -229,8 +229,7 @@ Vec2 vector(const json& value, const std::string& path, const NumberRule& rule) 
 }
 
 // A list of points: the right number of [x, y], then the stage's check of them together.
-std::vector<Vec2> points(const json& value, const std::string& path, const NumberRule& rule,
-                         const PointsRule& shape) {
+std::vector<Vec2> points(const json& value, const std::string& path, const NumberRule& rule, const PointsRule& shape) {
     const std::string many = "must be an array of " + std::to_string(shape.fewest) + " to " +
                              std::to_string(shape.most) + " points [[x, y], ...]";
     if (!value.is_array() || value.size() < shape.fewest || value.size() > shape.most) {
@@ -303,9 +302,8 @@ Assignment read_key(const SceneKey& key, const json& value, const std::string& p
             } else if constexpr (std::is_same_v<Target, SceneKey::Vector>) {
                 return [setting = target.setting, v = vector(value, path, target.rule)] { *setting = v; };
             } else if constexpr (std::is_same_v<Target, SceneKey::Points>) {
-                return [setting = target.setting, v = points(value, path, target.rule, target.points)] {
-                    *setting = v;
-                };
+                return
+                    [setting = target.setting, v = points(value, path, target.rule, target.points)] { *setting = v; };
             } else {
                 return [choose = target.choose, i = word(value, path, target.spellings)] { choose(i); };
             }

@@ -12,7 +12,8 @@ constexpr Vec2 kConcentricNormal{0, -1};
 
 std::optional<CollisionInfo> Circle::collisionTest(const RigidShape& other) const {
     if (other.type() == ShapeType::Circle) return collidedCircCirc(static_cast<const Circle&>(other));
-    if (other.type() == ShapeType::Polygon) return turnedRound(other.collisionTest(*this));  // 5.8's polygon_collision.cpp
+    if (other.type() == ShapeType::Polygon)
+        return turnedRound(other.collisionTest(*this));  // 5.8's polygon_collision.cpp
     // The rectangle works it out, with its normal pointing towards this circle: from
     // the other shape to this one. The pass turns it round.
     return static_cast<const Rectangle&>(other).collidedRectCirc(*this);

@@ -59,10 +59,10 @@ inline constexpr int kMaxAdvances = 50;
 // corners, with no radius.
 struct Outline {
     Vec2 center;
-    bool is_point = true;                              // a circle
+    bool is_point = true;                             // a circle
     std::array<Vec2, kMaxPolygonVertices> corners{};  // in order round it
-    std::size_t count = 0;                             // how many corners
-    bool square_corners = false;                       // a rectangle's (shrunk says why)
+    std::size_t count = 0;                            // how many corners
+    bool square_corners = false;                      // a rectangle's (shrunk says why)
     double radius = 0.0;
 
     std::span<const Vec2> cornerList() const { return {corners.data(), count}; }

@@ -15,11 +15,12 @@
 namespace {
 
 // The book's demo with every knob at its default, the book's engine, continuous
-// collision on, and the demo's game (my_game.h), which reads the events after every
-// step: a zone on the left floor counts the shapes in it, a shape turns orange at its
-// first contact, and a goal at the bottom right removes what falls into it. A scene
-// file turns the knobs (docs/scene_format.md) and has no game. Two seconds in, a box
-// and a ball are thrown from the long slide; at five seconds H kicks every shape.
+// collision on, five random convex polygons (5.8) after the book's shapes, and the
+// demo's game (my_game.h), which reads the events after every step: a zone on the left
+// floor counts the shapes in it, a shape turns orange at its first contact, and a goal
+// at the bottom right removes what falls into it. A scene file turns the knobs
+// (docs/scene_format.md) and has no game. Two seconds in, a box and a ball are thrown
+// from the long slide; at five seconds H kicks every shape.
 // A table, an option or a key a line, which the layout would re-wrap:
 // clang-format off
 const browser::StageDefaults kStage{

@@ -28,6 +28,7 @@ void buildScene(Core& core, browser::Random& random);
 //   - A shape turns orange at its first contact with another solid shape (a begin).
 //   - A goal, a sensor below the long slide's foot on the right, removes every shape
 //     that enters it and counts it as scored.
+// From 5.8 five random convex polygons follow the book's shapes.
 // The book's scene is built as buildScene builds it, with the zone and the goal added
 // after its four platforms (objects 4 and 5), so that the R key, which keeps the first
 // seven objects, keeps them too; they draw no random number, so the random shapes are

@@ -108,7 +108,8 @@ std::optional<CollisionInfo> collideWithCorner(Vec2 corner, const Circle& circle
 
 std::optional<CollisionInfo> Rectangle::collisionTest(const RigidShape& other) const {
     if (other.type() == ShapeType::Circle) return collidedRectCirc(static_cast<const Circle&>(other));
-    if (other.type() == ShapeType::Polygon) return turnedRound(other.collisionTest(*this));  // 5.8's polygon_collision.cpp
+    if (other.type() == ShapeType::Polygon)
+        return turnedRound(other.collisionTest(*this));  // 5.8's polygon_collision.cpp
     return collidedRectRect(static_cast<const Rectangle&>(other));
 }
 

@@ -28,7 +28,7 @@ struct BodyDescription {
     // Polygons only (5.8): the corners in the body's frame, px from its centre; the
     // polygon is their convex hull, its centre of area put on `center` (polygon.h).
     std::vector<Vec2> vertices;
-    double mass = 1.0;    // 0 makes the body static
+    double mass = 1.0;  // 0 makes the body static
     double friction = 0.8;
     double restitution = 0.2;
     double angle = 0.0;  // rad, applied after construction as the book's rotate(angle)

@@ -479,9 +479,8 @@ TEST_CASE("scene_file: nesting deeper than a scene can use is refused at the fir
     const std::size_t depth = 100'000;
     const fs::path file = folder.write(
         "deep.json", std::string(R"({"world": {"gravity": )").append(depth, '[').append(depth, ']').append("}}"));
-    CHECK(refusal(file) == file.string() +
-                               R"(: world.gravity[0][0][0]: nested deeper than a scene can use (5 levels: )"
-                               R"({"list": [{"key": [[x, y]]}]}))");
+    CHECK(refusal(file) == file.string() + R"(: world.gravity[0][0][0]: nested deeper than a scene can use (5 levels: )"
+                                           R"({"list": [{"key": [[x, y]]}]}))");
     // Five levels, as deep as a scene goes, are read (and refused for what they hold).
     const fs::path five = folder.write("five.json", R"({"world": {"gravity": [[[1]], 2]}})");
     CHECK(refusal(five) == five.string() + ": world.gravity[0]: must be a finite number (got [[1]])");

@@ -632,7 +632,7 @@ TEST_CASE("s5_7: the demo's goal removes what enters it after the step; no later
     }
     INFO("shapes the goal took: " << scored_at.size());
     CHECK(game.scored() == static_cast<int>(scored_at.size()));
-    CHECK(game.scored() >= 2);  // the demo does score: the test can fail
+    CHECK(game.scored() >= 1);  // the demo does score: the test can fail
     // No pair of a removed shape is left open.
     for (const auto& [pair, state] : open) {
         if (scored_at.count(pair.first) || scored_at.count(pair.second)) CHECK(state == 0);
