@@ -1,6 +1,6 @@
-// Fuzz target: a scene read and run by the newest stage (5.7: sleeping, continuous
-// collision, bullets and sensors as a scene file sets them, and its collision events
-// kept). The input is the scene file's
+// Fuzz target: a scene read and run by the newest stage (5.8: sleeping, continuous
+// collision, bullets, sensors and convex polygons as a scene file sets them, and its
+// collision events kept). The input is the scene file's
 // text, as --scene reads it; an accepted scene is built and stepped, as the program
 // would run it, for as many steps as a small budget of pair tests allows (up to 20).
 //
