@@ -40,7 +40,7 @@ struct NumberRule {
 // How much a scene file may hold, so that reading it fits in memory and ends: 2 MiB
 // of text (a stage's own limit on its lists keeps a run within its budget), nested no
 // deeper than the deepest value a scene has, a list of points in an element of a list,
-// {"list": [{"key": [[x, y]]}]}: five levels (a polygon's corners, from 5.8).
+// {"list": [{"key": [[x, y]]}]}: five levels (the corners of a shape that has them).
 inline constexpr std::size_t kMaxSceneBytes = 2 << 20;  // 2 MiB
 inline constexpr std::size_t kMaxNesting = 5;
 
