@@ -6,6 +6,7 @@
 
 #include "contact_overlay.h"
 #include "events_overlay.h"
+#include "gjk_overlay.h"
 #include "grid_overlay.h"
 #include "islands_overlay.h"
 #include "overlay_draw.h"
@@ -189,9 +190,9 @@ void drawOverlay(browser::Window& window, const Core& core) {
     window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    // 5.7's own layer is the events (events_overlay.h). Every layer adds the bounding
-    // circles, the grid, 5.5's islands, chapter 3's and 4's layers, 5.4's contacts and
-    // 5.6's sweeps.
+    // 5.8's own layer is GJK's diagram (gjk_overlay.h). Every layer adds the bounding
+    // circles, the grid, 5.5's islands, chapter 3's and 4's layers, 5.4's contacts,
+    // 5.6's sweeps and 5.7's events.
     const bool all = window.overlay_all;
     if (all) {
         drawBounds(sheet, core);
@@ -204,8 +205,10 @@ void drawOverlay(browser::Window& window, const Core& core) {
         drawLeverArms(sheet, core);
         drawContacts(sheet.canvas, core, legend);
         drawSweeps(sheet, core);
+        drawEvents(sheet.canvas, sheet.labels, core, legend);
     }
-    drawEvents(sheet.canvas, sheet.labels, core, legend);
+    // Last, so that its inset lies over every other layer.
+    drawGjk(sheet.canvas, sheet.labels, core, legend);
 }
 
 }  // namespace engine

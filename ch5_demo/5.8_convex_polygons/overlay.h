@@ -49,6 +49,10 @@
 //
 // 5.7's collision events add their own (events_overlay.h): each begin, end and hit
 // where it happened, for half a second, and their counts.
+//
+// 5.8's GJK adds its diagram (gjk_overlay.h): for the selected shape and the one
+// nearest it, their Minkowski difference in an inset, the origin, GJK's last simplex
+// and the distance, and on the canvas the two closest points.
 
 #include <cstddef>
 
@@ -62,7 +66,7 @@ namespace engine {
 // Document::legend_entries), the second in a run where every layer can come on, so that
 // every picture of a run has one height, whichever layers are on.
 inline constexpr std::size_t kOwnLegendEntries = 4;
-inline constexpr std::size_t kLegendEntries = 31;
+inline constexpr std::size_t kLegendEntries = 35;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

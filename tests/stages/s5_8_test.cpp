@@ -13,12 +13,15 @@
 #include <filesystem>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "circle.h"
+#include "gjk_overlay.h"
 #include "near.h"
 #include "narrow_phase.h"
+#include "overlay_draw.h"
 #include "polygon.h"
 #include "rectangle.h"
 #include "scene_io.h"
@@ -225,6 +228,54 @@ TEST_CASE("s5_8: corners that make no convex polygon are refused in one line, an
     refuses("far.json", "[[0, 0], [1e6, 0], [0, 10]]", "bodies[0].vertices[1][0]");
     refuses("word.json", "[[0, 0], [10, \"x\"], [0, 10]]", "bodies[0].vertices[1][1]");
     refuses("flat.json", "[0, 0, 10, 0, 0, 10]", "bodies[0].vertices[0]");
+}
+
+// The overlay's diagram (gjk_overlay.h) by hand: two 40 px boxes side by side, 30 px
+// apart, have A - B the 80 px square of every corner difference, centred on the
+// difference of their centres (-70, 0), and the closest points are the facing sides'.
+TEST_CASE("s5_8: the overlay's GJK diagram picks the nearest shape and prints the distance worked out by hand") {
+    test::WorldFixture page(test::world(false));
+    engine::RigidShape& a = page.core.add(engine::Polygon({100, 100}, boxCorners(40, 40)));
+    page.core.add(engine::Polygon({170, 100}, boxCorners(40, 40)));  // 30 px to the right
+    page.core.add(engine::Polygon({100, 200}, boxCorners(40, 40)));  // 60 px below
+    page.core.add(engine::Circle({400, 100}, 10));                   // 200 px from the second box
+    REQUIRE(page.core.selectedIndex() == 0);
+    std::optional<engine::GjkDiagram> diagram = engine::gjkDiagram(page.core);
+    REQUIRE(diagram);
+    CHECK(diagram->first == 0);
+    CHECK(diagram->second == 1);
+    CHECK(browser::overlay::fixed(diagram->gjk.distance, 2) == "30.00");
+    CHECK(diagram->gjk.point_a.x == Approx(120.0));
+    CHECK(diagram->gjk.point_b.x == Approx(150.0));
+    CHECK(diagram->radius == 0.0);
+    std::vector<Vec2> corners = diagram->difference;
+    REQUIRE(corners.size() == 4);
+    std::sort(corners.begin(), corners.end(), [](Vec2 p, Vec2 q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+    const std::vector<Vec2> square{{-110, -40}, {-110, 40}, {-30, -40}, {-30, 40}};
+    for (std::size_t i = 0; i < 4; ++i) {
+        CHECK(corners[i].x == Approx(square[i].x));
+        CHECK(corners[i].y == Approx(square[i].y));
+    }
+    // The circle selected: its nearest is the box on the right, 400 - 10 - 190 = 200 px
+    // away, and A - B is the circle's centre less the box's corners, rounded by the radius.
+    page.core.select(3);
+    diagram = engine::gjkDiagram(page.core);
+    REQUIRE(diagram);
+    CHECK(diagram->second == 1);
+    CHECK(browser::overlay::fixed(diagram->gjk.distance, 2) == "200.00");
+    CHECK(diagram->radius == 10.0);
+    CHECK(diagram->difference.size() == 4);
+    // Moved to touch, the distance is 0: the origin lies in A - B.
+    a.move({30, 0});
+    page.core.select(0);
+    CHECK(engine::gjkDiagram(page.core)->gjk.distance == 0.0);
+}
+
+// With one shape there is no pair to draw.
+TEST_CASE("s5_8: the overlay's GJK diagram has no pair in a world of one shape") {
+    test::WorldFixture page(test::world(false));
+    page.core.add(engine::Circle({100, 100}, 10));
+    CHECK_FALSE(engine::gjkDiagram(page.core).has_value());
 }
 
 }  // namespace s5_8_test
