@@ -100,12 +100,6 @@ UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2
     return points;
 }
 
-// A shape with corners as a polygon: a rectangle as the 4-gon of its corners (5.8).
-ConvexPolygon cornersOf(const RigidShape& shape) {
-    if (shape.type() == ShapeType::Rectangle) return outlineOf(static_cast<const Rectangle&>(shape));
-    return static_cast<const Polygon&>(shape).outline();
-}
-
 // A pair with a polygon in it and no circle (5.8): the same clipping for n sides
 // (polygon_sat.h), its keys in the same layout.
 UpToTwo<ContactPoint> polygonPoints(const RigidShape& a, const RigidShape& b, Vec2 normal) {

@@ -26,11 +26,6 @@ constexpr double kSideLineReach = 12.0;  // px
 struct Face {
     Vec2 from, to;
 };
-// A shape with corners as a polygon: a rectangle's four, or a polygon's (5.8).
-ConvexPolygon cornersOf(const RigidShape& shape) {
-    if (shape.type() == ShapeType::Rectangle) return outlineOf(static_cast<const Rectangle&>(shape));
-    return static_cast<const Polygon&>(shape).outline();
-}
 Face faceOf(const ConvexPolygon& outline, std::size_t face) { return {outline.corner(face), outline.corner(face + 1)}; }
 
 // The reference face, its side lines, and the incident face, for a contact of two

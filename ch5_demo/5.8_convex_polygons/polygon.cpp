@@ -68,4 +68,9 @@ void Polygon::draw(browser::Canvas& context) const {
 
 ConvexPolygon outlineOf(const Rectangle& rectangle) { return makeConvexPolygon(rectangle.vertices()); }
 
+ConvexPolygon cornersOf(const RigidShape& shape) {
+    if (shape.type() == ShapeType::Rectangle) return outlineOf(static_cast<const Rectangle&>(shape));
+    return static_cast<const Polygon&>(shape).outline();
+}
+
 }  // namespace engine

@@ -54,6 +54,11 @@ private:
 // counter-clockwise in the sense convex_polygon.h uses), for the tests between the two.
 ConvexPolygon outlineOf(const class Rectangle& rectangle);
 
+// A shape with corners (a rectangle or a polygon, never a circle) as a polygon: the
+// rectangle as the 4-gon of its corners. The clipping and the contact overlay see both
+// kinds through it.
+ConvexPolygon cornersOf(const RigidShape& shape);
+
 // The book's rectangle-circle test (Figure 3-17) for any convex polygon: the face
 // nearest the circle's centre, then the centre in front of the face or past one of its
 // ends. The normal points from the polygon towards the circle.
