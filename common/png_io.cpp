@@ -102,6 +102,22 @@ Image decode_png(std::span<const unsigned char> bytes) {
         throw FileError("not a PNG file");
     }
     if (bytes.size() > kLargestPngFile) throw FileError("it is larger than a picture of a run can be");
+    // stb_image grows its buffer for the picture's data by what each chunk's length says
+    // before it reads the chunk: a 93-byte file claiming a 2 GB chunk made it ask for 2 GB
+    // (found by fuzz/png_reader). Each image-data chunk must fit the file.
+    for (std::size_t at = kPngSignature.size(); at + 8 <= bytes.size();) {
+        const std::uint64_t length = (std::uint64_t{bytes[at]} << 24) | (std::uint64_t{bytes[at + 1]} << 16) |
+                                     (std::uint64_t{bytes[at + 2]} << 8) | std::uint64_t{bytes[at + 3]};
+        const auto type = bytes.begin() + static_cast<std::ptrdiff_t>(at + 4);
+        if (at + 12 + length > bytes.size() && std::equal(type, type + 4, "IDAT")) {
+            throw FileError("damaged PNG file (a chunk runs past the end of the file)");
+        }
+        if (at + 12 + length > bytes.size()) break;  // stb names what else is wrong
+        if (std::equal(bytes.begin() + static_cast<std::ptrdiff_t>(at + 4),
+                       bytes.begin() + static_cast<std::ptrdiff_t>(at + 8), "IEND"))
+            break;
+        at += 12 + static_cast<std::size_t>(length);
+    }
     const int size = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels_in_file = 0;
     // The header says how large the picture is; a small file can unpack to gigabytes.
