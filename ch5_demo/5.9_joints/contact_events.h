@@ -1,0 +1,152 @@
+#pragma once
+// Collision events (not in the book: its "Further Exploration" names collision callbacks,
+// OnCollisionEnter and OnCollisionExit, among the topics left to explore). Game logic
+// wants to hear that two shapes began or stopped touching: to score a goal, count what
+// lies in a zone, play a sound as hard as the hit. The physics knows it, pair by pair,
+// in the middle of its step.
+//
+// Why buffered, and read after the step. A callback called from inside the step would
+// hand the game a world half-way through its work: the book's relaxation passes have
+// moved some shapes and not others, and the list of shapes is being walked. A game that
+// removed a shape there, or added one, would pull the list from under the loop that
+// called it. So the step only writes down what happened, and the game reads the list
+// once the step is over, when the world stands still and any change is safe (as Box2D
+// v3 does).
+//
+// Touching, once for both solvers: a pair begins to touch in the first step whose
+// collision pass (any of the book's relaxation passes, or the sequential impulse
+// solver's one look) finds its shapes overlapping. It goes on touching while one of
+// the last kMissedSteps steps found it: the book's passes push a resting shape clear of
+// what holds it up, its bounce lifts it a hair, and gravity brings it back a step or two
+// later, so a box at rest on the floor is not found in every step (5.5's islands count
+// a shape as held by a contact of this step or the last for the same reason). A pair
+// that no pass tests, because both of its shapes rest (asleep, or static), goes on
+// touching as it did when they fell asleep: sleep is not separation. It stops touching
+// when kMissedSteps steps in a row do not find it, or at once when one of its shapes is
+// removed, made static, or moved by a key.
+//
+// A pair is named by its shapes' ids (rigid_shape.h), smaller first: an id never
+// changes and is never given twice, so a pair cannot be mistaken for another one when
+// shapes leave the list. Its normal points from the first shape to the second.
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "collision_info.h"
+#include "rigid_shape.h"
+
+namespace engine {
+
+// A begin is also a hit when the pair's surfaces met faster than this along the normal
+// (a pair with a sensor is never hit: nothing strikes a zone):
+// a fall of 2.5 px under the book's gravity (v^2 = 2 g h), so that a shape settling on
+// another, or a pile's jitter (under 5.5's sleep speed, 3 px/s), is no hit.
+inline constexpr double kHitSpeed = 10.0;  // px/s
+
+// How many steps in a row must miss a pair before it ends. A box of the book's woken
+// from sleep hovered 0.008 px over the floor (tests/stages/s5_7_test.cpp): gravity from
+// rest closes that in two steps (g dt^2 (1 + 2) = 0.017 px), found again in the third.
+inline constexpr int kMissedSteps = 3;
+
+// How long the overlay shows an event where it happened: half a second of the book's
+// steps, long enough to see, short enough not to pile up.
+inline constexpr long kShownSteps = 30;
+
+enum class EventKind { begin, end, hit };
+
+// Who reads the events: each turns them on and off for itself, and they are kept while
+// any one of them reads (the overlay going off must not silence the --events file).
+enum class EventReader : unsigned { program = 1, game = 2, overlay = 4 };
+std::string_view kindName(EventKind kind);
+
+struct ContactEvent {
+    long step = 0;  // the steps run when it happened (a key's between two steps: the one before)
+    EventKind kind = EventKind::begin;
+    BodyId id_a = 0;  // the smaller id
+    BodyId id_b = 0;
+    Vec2 point;          // the middle of the overlap (an end: where the pair last touched)
+    Vec2 normal;         // from a to b
+    double speed = 0.0;  // px/s, how fast the pair's surfaces met along the normal (hits only)
+};
+
+class ContactEvents {
+public:
+    // Events cost a little bookkeeping in every step; a world nobody listens to keeps
+    // none (and touches nothing either way: the shapes move the same, to the bit).
+    // `reader` starts or stops reading; when the last one stops, the record is dropped.
+    void keep(EventReader reader, bool on);
+    bool kept() const { return readers_ != 0; }
+
+    // The step's outline, for the core: the key events since the last step go to the
+    // front of the new step's list; the physics reports each pair it finds touching;
+    // after the motion (and the removal of shapes that left the canvas), the pairs are
+    // compared with the step before. `hit_speed` is the approach speed, px/s, above
+    // which a begin is also a hit.
+    void startStep(long step);
+    void touching(const RigidShape& a, const RigidShape& b, const CollisionInfo& info);
+    // The same for a pair with a sensor in it: told like any touch, but two sensors
+    // never feel each other (zones do not trigger zones).
+    void sensed(const RigidShape& a, const RigidShape& b, const CollisionInfo& info);
+    // A fast shape's sweep (continuous.h) passed through a sensor within the step, at
+    // `point`, moving along `direction`: the pair touched in this step though no look
+    // at the step's end finds it.
+    void crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction);
+    void endStep(ShapeList shapes, double hit_speed);
+
+    // A key took the shape out of its contacts (removed it, made it static, moved it):
+    // each pair it touched ends now. If it still touches, the next step begins it anew.
+    void shapeLeaves(BodyId id);
+
+    // What happened in the last step, in order (with the keys' before it).
+    const std::vector<ContactEvent>& events() const { return events_; }
+    // What happened in the last kShownSteps steps, oldest first (the overlay's).
+    const std::vector<ContactEvent>& recent() const { return recent_; }
+    // The step the events were last told for.
+    long step() const { return step_; }
+    // How many pairs touch now.
+    std::size_t touchingCount() const { return touching_.size(); }
+
+private:
+    using PairIds = std::pair<BodyId, BodyId>;
+    struct Touch {
+        PairIds pair;
+        Vec2 point;
+        Vec2 normal;
+        double speed = 0.0;   // approach speed when first found in the step
+        int missed = 0;       // steps in a row that have not found it
+        bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
+    };
+    ContactEvent eventOf(EventKind kind, const Touch& touch) const;
+    // Whether this is the step's first report of the pair, which found_ keeps: the
+    // book's passes find a pair again in every pass, and the first report, from before
+    // anything resolved it, has the speed the pair met at. If so, the pair's report is
+    // to be the next one in found_.
+    bool firstReport(PairIds pair);
+    std::size_t slotOf(PairIds pair) const;
+    void holdReports(std::size_t reports);
+
+    unsigned readers_ = 0;  // EventReader bits
+    // A reader who starts listening after steps have run hears of what changes from
+    // then on: the pairs touching already are taken in, in the next step, without a
+    // begin (the overlay turned on with t would otherwise see every resting pair begin).
+    bool taking_in_ = false;
+    long step_ = 0;
+    std::vector<Touch> found_;  // this step's first report of each pair found
+    // Where each pair of found_ is, looked up by its ids: a table of found_'s indices + 1
+    // (0 for an empty slot), at most half full, each pair in the first free slot from
+    // where its ids hash to. A lookup costs about the same however many pairs touch;
+    // sorting every pass's reports to find the first of each cost a rain of 1000 a
+    // fifth of its step (bench: the speed study).
+    std::vector<std::uint32_t> first_report_;
+    std::vector<BodyId> ids_;      // the shapes' ids at the end of the step, in the list's order
+    std::vector<Touch> touching_;  // the pairs touching, by pair
+    std::vector<Touch> next_;      // endStep's new touching_, swapped in
+    std::vector<ContactEvent> events_;
+    std::vector<ContactEvent> pending_;  // the keys' since the last step
+    std::vector<ContactEvent> recent_;
+};
+
+}  // namespace engine
