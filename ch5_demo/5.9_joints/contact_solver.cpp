@@ -49,18 +49,24 @@ std::size_t ContactSolver::pointCount() const {
 }
 
 void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                         const WorldSettings& world, std::vector<Collision>& found) {
-    findContacts(shapes, broad_phase, islands, events, world, found);
+                         Joints& joints, const WorldSettings& world, std::vector<Collision>& found) {
+    // The joints first: a body joined to an awake one wakes before the pass meets its pairs.
+    if (!joints.empty()) joints.startStep(shapes, islands);
+    findContacts(shapes, broad_phase, islands, events, joints, world, found);
     prepare(shapes, world);
-    if (world.warm_starting) warmStart();
+    joints.prepare(shapes, bodies_, world);
+    if (world.warm_starting) {
+        joints.warmStart(bodies_);
+        warmStart();
+    }
     switch (world.position_method) {
-        case PositionMethod::baumgarte: solveVelocities(world.velocity_iterations, true); break;
+        case PositionMethod::baumgarte: solveVelocities(world.velocity_iterations, true, joints); break;
         case PositionMethod::relax:
-            solveVelocities(world.velocity_iterations, true);
-            relaxAndMove(shapes, world);
+            solveVelocities(world.velocity_iterations, true, joints);
+            relaxAndMove(shapes, world, joints);
             break;
         case PositionMethod::split_impulse:
-            solveVelocities(world.velocity_iterations, false);
+            solveVelocities(world.velocity_iterations, false, joints);
             solvePositions(shapes, world);
             break;
     }
@@ -114,12 +120,12 @@ void ContactSolver::indexLastContacts(ShapeList shapes, std::uint64_t wakes) {
 // for each pair that overlaps its contact points, each matched by key with the points
 // of the same pair in the last step.
 void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                                 const WorldSettings& world, std::vector<Collision>& found) {
+                                 const Joints& joints, const WorldSettings& world, std::vector<Collision>& found) {
     last_.swap(contacts_);
     contacts_.clear();
     indexLastContacts(shapes, islands.wakeCount());
     const std::size_t found_before = found.size();
-    if (!meetPairs(shapes, broad_phase, islands, events, world, found)) return;
+    if (!meetPairs(shapes, broad_phase, islands, events, joints, world, found)) return;
     // An awake shape reached a sleeping island in the middle of the pass, and woke it:
     // the island's own pairs that the pass met before that were passed over as asleep.
     // Nothing has moved yet, so the pass runs again, and the island is solved whole in
@@ -127,11 +133,11 @@ void ContactSolver::findContacts(ShapeList shapes, BroadPhase& broad_phase, Isla
     contacts_.clear();
     found.resize(found_before);
     indexLastContacts(shapes, islands.wakeCount());
-    meetPairs(shapes, broad_phase, islands, events, world, found);
+    meetPairs(shapes, broad_phase, islands, events, joints, world, found);
 }
 
 bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                              const WorldSettings& world, std::vector<Collision>& found) {
+                              const Joints& joints, const WorldSettings& world, std::vector<Collision>& found) {
     persisted_ = 0;
     bool woke = false;
     broad_phase.startStep(shapes, 1);
@@ -139,6 +145,9 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
         const RigidShape& a = *shapes[i];
         const RigidShape& b = *shapes[j];
         if (a.isResting() && b.isResting()) return false;
+        // Two bodies a joint holds together do not collide (joints.h): a chain's links
+        // overlap at their pins.
+        if (joints.keepsApart(a.id(), b.id())) return false;
         const std::optional<CollisionInfo> info = narrowPhase(a, b);
         if (!info) return false;
         // A sensor only tells what overlaps it (rigid_shape.h): no contact, no island.
@@ -265,13 +274,14 @@ void ContactSolver::warmStart() {
 // Gauss-Seidel over the contact points: each point in turn gets the impulse that puts
 // its own speed right, as the others' impulses have left it; repeated, the impulses
 // settle on values that suit all the points together.
-void ContactSolver::solveVelocities(int iterations, bool with_removal) {
+void ContactSolver::solveVelocities(int iterations, bool with_removal, Joints& joints) {
     for (Contact& contact : contacts_) {
         for (Point& point : contact.points) {
             point.target_speed = with_removal ? std::max(point.bounce_speed, point.removal_speed) : point.bounce_speed;
         }
     }
     for (int iteration = 0; iteration < iterations; ++iteration) {
+        joints.solve(bodies_);  // the joints first, as Box2D: the contacts have the last word
         for (Contact& contact : contacts_) {
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];
@@ -347,10 +357,10 @@ void ContactSolver::solvePair(Contact& contact) {
 // step). The shapes are moved by the difference, so that overall they move as the
 // first velocities say, but keep the second ones: the overlap is gone, and no energy
 // was added to remove it.
-void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world) {
+void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints) {
     std::vector<Motion> with_removal(bodies_.size());
     for (std::size_t i = 0; i < bodies_.size(); ++i) with_removal[i] = bodies_[i].velocity;
-    solveVelocities(world.position_iterations, false);
+    solveVelocities(world.position_iterations, false, joints);
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const SolverBody& body = bodies_[i];
         if (body.inv_mass == 0.0) continue;

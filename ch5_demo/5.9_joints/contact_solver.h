@@ -37,6 +37,7 @@
 #include "collision_info.h"
 #include "contact_manifold.h"
 #include "islands.h"
+#include "joints.h"
 #include "narrow_phase.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
@@ -76,8 +77,10 @@ public:
     // narrow-phase answer goes to `found`, in the order met.
     // Every touching pair is reported to `islands`, which wakes a sleeping shape that an
     // awake one reaches, and to `events` (5.7's contact_events.h); a pair of two
-    // sleeping or static shapes is not tested.
-    void step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
+    // sleeping or static shapes is not tested. 5.9's joints (joints.h) are solved in
+    // the same iterations, each before the contacts, and a pair a joint keeps apart is
+    // not tested either.
+    void step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events, Joints& joints,
               const WorldSettings& world, std::vector<Collision>& found);
 
     // How many contact points the last step solved, and how many of them were found
@@ -118,18 +121,18 @@ public:
 
 private:
     void findContacts(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                      const WorldSettings& world, std::vector<Collision>& found);
+                      const Joints& joints, const WorldSettings& world, std::vector<Collision>& found);
     // The pass over the pairs; returns whether it woke an island.
     bool meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                   const WorldSettings& world, std::vector<Collision>& found);
+                   const Joints& joints, const WorldSettings& world, std::vector<Collision>& found);
     // Sorts the last step's contacts, and the sleeping ones, into those the pass may meet
     // again (last_, indexed) and those of shapes that both rest (asleep_). `wakes`: the
     // islands' count of wakes, which says whether a sleeping contact can have woken.
     void indexLastContacts(ShapeList shapes, std::uint64_t wakes);
     void prepare(ShapeList shapes, const WorldSettings& world);
     void warmStart();
-    void solveVelocities(int iterations, bool with_removal);
-    void relaxAndMove(ShapeList shapes, const WorldSettings& world);
+    void solveVelocities(int iterations, bool with_removal, Joints& joints);
+    void relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints);
     void solvePair(Contact& contact);
     void solvePositions(ShapeList shapes, const WorldSettings& world);
 

@@ -282,7 +282,7 @@ void ContinuousCollision::startStep(ShapeList shapes) {
     for (std::size_t i = 0; i < shapes.size(); ++i) start_[i] = {shapes[i]->center(), shapes[i]->angle()};
 }
 
-void ContinuousCollision::sweep(ShapeList shapes) {
+void ContinuousCollision::sweep(ShapeList shapes, const Joints* joints) {
     sweeps_.clear();
     crossings_.clear();
     // A shape that is no bullet is swept against the static shapes alone: they are
@@ -307,6 +307,7 @@ void ContinuousCollision::sweep(ShapeList shapes) {
         const auto sweepAgainst = [&](std::size_t j) {
             const RigidShape& other = *shapes[j];
             if (j == i || !mayMeet(shape, start.center, shape.center(), other)) return;
+            if (joints && joints->keepsApart(shape.id(), other.id())) return;
             if (other.isSensor()) {
                 sensors_met_.push_back(j);  // felt, not hit: looked at once the stop is known
                 return;

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "convex_polygon.h"
+#include "joints.h"
 #include "rigid_shape.h"
 
 namespace engine {
@@ -126,7 +127,9 @@ public:
     void startStep(ShapeList shapes);
     // After they moved: sweeps every fast shape and moves the ones that hit something
     // back to their time of impact.
-    void sweep(ShapeList shapes);
+    // 5.9: `joints`, when given, names the pairs a joint keeps from colliding
+    // (joints.h): a link pinned to a post overlaps it, and is not stopped by it.
+    void sweep(ShapeList shapes, const Joints* joints = nullptr);
     const std::vector<Sweep>& sweeps() const { return sweeps_; }
     const std::vector<Crossing>& crossings() const { return crossings_; }
     // For the core, when it takes shapes out of the list.

@@ -80,6 +80,7 @@ void Core::keepFirstObjects(std::size_t count) {
     for (std::size_t i = count; i < all_objects_.size(); ++i) {
         wakeIslandOf(i);
         leaveContacts(i);
+        physics_.joints().forgetBody(all_objects_[i]->id());
     }
     if (count < all_objects_.size()) all_objects_.resize(count);
     if (selected_ >= all_objects_.size()) selected_ = 0;
@@ -92,6 +93,7 @@ bool Core::remove(BodyId id) {
     const auto index = static_cast<std::size_t>(found - all_objects_.begin());
     wakeIslandOf(index);
     leaveContacts(index);
+    physics_.joints().forgetBody(id);
     all_objects_.erase(found);
     // The physics' record and the sweeps name shapes by their places, which moved up.
     physics_.forgetResponses();
@@ -99,6 +101,14 @@ bool Core::remove(BodyId id) {
     if (selected_ > index) --selected_;  // the same shape stays selected
     if (selected_ >= all_objects_.size()) selected_ = 0;
     return true;
+}
+
+void Core::join(const JointDefinition& joint) {
+    for (std::size_t i = 0; i < all_objects_.size(); ++i) {
+        const BodyId id = all_objects_[i]->id();
+        if ((id == joint.body_a || id == joint.body_b) && !all_objects_[i]->isStatic()) wakeIslandOf(i);
+    }
+    physics_.joints().add({.definition = joint, .impulses = {}});
 }
 
 void Core::setGame(GameLogic* game) {
@@ -137,8 +147,12 @@ void Core::update() {
         for (const auto& shape : all_objects_) {
             if (!shape->sleep().asleep) shape->update(sub_step);
         }
+        // 5.9: the joints' positional passes, once every shape has moved (joints.h).
+        if (settings_.solver == SolverKind::sequential_impulse && !physics_.joints().empty()) {
+            physics_.joints().correctPositions(all_objects_, sub_step);
+        }
         if (settings_.continuous) {
-            continuous_.sweep(all_objects_);
+            continuous_.sweep(all_objects_, &physics_.joints());
             for (const Crossing& crossing : continuous_.crossings()) {
                 physics_.events().crossed(*all_objects_[crossing.mover], *all_objects_[crossing.sensor], crossing.point,
                                           crossing.direction);
@@ -177,7 +191,9 @@ bool Core::isOutOfBounds(const RigidShape& shape) const {
 // wakes its island: what it held up, or lay on (islands.h).
 void Core::removeOutOfBounds() {
     for (std::size_t i = 0; i < all_objects_.size(); ++i) {
-        if (isOutOfBounds(*all_objects_[i])) wakeIslandOf(i);
+        if (!isOutOfBounds(*all_objects_[i])) continue;
+        wakeIslandOf(i);
+        physics_.joints().forgetBody(all_objects_[i]->id());
     }
     if (std::erase_if(all_objects_, [this](const auto& shape) { return isOutOfBounds(*shape); }) > 0) {
         physics_.forgetResponses();

@@ -85,6 +85,11 @@ public:
     // as the game's logic does (GameLogic). It wakes what it held up and ends every
     // pair it touched; the shapes after it move up the list. Returns whether it was there.
     bool remove(BodyId id);
+    // 5.9: joins two shapes of the world with a joint (joints.h: pinAt, linkBetween make
+    // one). The two wake: a joint is a change to both. A shape that leaves the world
+    // takes its joints with it.
+    void join(const JointDefinition& joint);
+    const Joints& joints() const { return physics_.joints(); }
     RigidShape& object(std::size_t index) { return *all_objects_.at(index); }
     const RigidShape& object(std::size_t index) const { return *all_objects_.at(index); }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace engine {
 
@@ -74,6 +75,18 @@ bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double de
     for (const std::size_t shape : {i, j}) {
         if (!shapes[shape]->sleep().asleep) continue;
         wakeIslandOf(shapes, shape, RestTimer::goes_on);
+        woke = true;
+    }
+    return woke;
+}
+
+bool Islands::joined(ShapeList shapes, std::size_t i, std::size_t j) {
+    held_[i] = held_[j] = 1;
+    if (!shapes[i]->isStatic() && !shapes[j]->isStatic()) parent_[root(i)] = root(j);
+    bool woke = false;
+    for (const auto& [sleeper, other] : {std::pair{i, j}, std::pair{j, i}}) {
+        if (!shapes[sleeper]->sleep().asleep || shapes[other]->isResting()) continue;
+        wakeIslandOf(shapes, sleeper, RestTimer::goes_on);
         woke = true;
     }
     return woke;

@@ -52,6 +52,11 @@ public:
     void startStep(ShapeList shapes);
     // Returns whether it woke an island.
     bool touching(ShapeList shapes, std::size_t i, std::size_t j, double depth);
+    // 5.9: a joint holds the two (joints.h). Like a touch, it holds each of them and
+    // makes them one island, and an awake body wakes a sleeping one it is joined to;
+    // unlike a touch, it is there whether they move or not, so two sleeping bodies (or a
+    // sleeping one and a static one) stay asleep. Returns whether it woke an island.
+    bool joined(ShapeList shapes, std::size_t i, std::size_t j);
 
     // After the shapes' motion: the islands of the step's contacts, each awake shape's
     // rest timer, and the islands that have rested long enough fall asleep.

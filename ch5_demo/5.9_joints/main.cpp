@@ -63,7 +63,7 @@ public:
     Page(browser::Window& window, browser::Random& random, const engine::Scene* scene)
         : core_(window, scene ? scene->world : engine::kBookWorld), control_(core_, random) {
         if (scene) {
-            engine::buildScene(core_, scene->bodies);
+            engine::buildScene(core_, *scene);
         } else {
             // The book's demo, with the game that reads its events (my_game.h).
             game_.emplace(core_, random);

@@ -161,7 +161,7 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
     islands_.startStep(shapes);
     if (world.solver == SolverKind::sequential_impulse) {
-        return contact_solver_.step(shapes, broad_phase_, islands_, events_, world, collisions_);
+        return contact_solver_.step(shapes, broad_phase_, islands_, events_, joints_, world, collisions_);
     }
     broad_phase_.startStep(shapes, world.relaxation_iterations);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {

@@ -42,6 +42,7 @@
 #include "contact_events.h"
 #include "contact_solver.h"
 #include "islands.h"
+#include "joints.h"
 #include "narrow_phase.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
@@ -95,6 +96,10 @@ public:
     // either solver, before anything resolves it (contact_events.h).
     ContactEvents& events() { return events_; }
     const ContactEvents& events() const { return events_; }
+    // 5.9's joints (joints.h), solved by the sequential impulse solver. The book's passes
+    // do not solve them: a scene with joints must choose that solver (scene_io.cpp).
+    Joints& joints() { return joints_; }
+    const Joints& joints() const { return joints_; }
 
 private:
     // The overlay's record of `pair`, or nullptr while it keeps none.
@@ -107,6 +112,7 @@ private:
     ContactSolver contact_solver_;
     Islands islands_;
     ContactEvents events_;
+    Joints joints_;
 };
 
 }  // namespace engine

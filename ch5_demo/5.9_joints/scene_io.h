@@ -6,12 +6,14 @@
 // words, their rules and their defaults are the stage's, written here once.
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "core.h"
+#include "joints.h"
 #include "scene_file.h"
 #include "stage_main.h"
 #include "world_settings.h"
@@ -42,6 +44,29 @@ struct BodyDescription {
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
 };
 
+// 5.9: one joint of a scene file, as its keys describe it (jointKeys; joints.h). A
+// number left out is kNotGiven (no file can give a NaN: every rule refuses it).
+inline constexpr double kNotGiven = std::numeric_limits<double>::quiet_NaN();
+struct JointDescription {
+    JointType type = JointType::revolute;
+    Vec2 bodies;  // the two bodies' places in the scene's body list, as read
+    Vec2 anchor;  // revolute, weld, prismatic: world px at the start
+    std::vector<Vec2> anchors;  // distance: one on each body, world px at the start
+    Vec2 axis;                  // prismatic
+    double lower_angle = kNotGiven;  // revolute, rad
+    double upper_angle = kNotGiven;
+    double motor_speed = kNotGiven;  // revolute, rad/s
+    double max_motor_torque = kNotGiven;
+    double lower_translation = kNotGiven;  // prismatic, px
+    double upper_translation = kNotGiven;
+    double length = kNotGiven;  // distance, px
+    double min_length = kNotGiven;
+    double max_length = kNotGiven;
+    double hertz = kNotGiven;  // distance: a spring
+    double damping_ratio = kNotGiven;
+    bool collide_connected = false;
+};
+
 // The world keys the stage reads, bound to `world`: one for each of its settings.
 std::vector<browser::SceneKey> worldKeys(WorldSettings& world);
 // The keys a body of `body.shape` takes, bound to `body`, in the order refusals list them.
@@ -49,6 +74,9 @@ std::vector<browser::SceneKey> bodyKeys(BodyDescription& body);
 // The "bodies" list of a scene: each element a body of one of the shapes, read into
 // `bodies` in file order.
 browser::SceneList bodyList(std::vector<BodyDescription>& bodies);
+// The keys a joint of `joint.type` takes, and the "joints" list (5.9).
+std::vector<browser::SceneKey> jointKeys(JointDescription& joint);
+browser::SceneList jointList(std::vector<JointDescription>& joints);
 // How scene files and state dumps spell a shape type: "rectangle", "circle".
 std::string_view shapeName(ShapeType type);
 
@@ -57,6 +85,7 @@ std::string_view shapeName(ShapeType type);
 struct Scene {
     WorldSettings world = kBookWorld;
     std::vector<BodyDescription> bodies;
+    std::vector<JointDescription> joints;  // 5.9
 };
 Scene loadScene(const std::filesystem::path& file);
 // The same for a scene that is already text; `source` stands for the file in a refusal.
@@ -73,5 +102,8 @@ inline constexpr browser::SceneFiles<Scene> kSceneFiles{.load = loadScene, .canv
 // body with "bullet": true becomes a bullet (continuous.h), one with "sensor": true a
 // sensor (rigid_shape.h).
 void buildScene(Core& core, const std::vector<BodyDescription>& bodies);
+// 5.9: the bodies, then the joints between them (joints.h), each anchored where the
+// bodies stand once built and turned.
+void buildScene(Core& core, const Scene& scene);
 
 }  // namespace engine

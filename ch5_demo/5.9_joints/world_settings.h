@@ -73,6 +73,12 @@ inline constexpr double kSleepSpeedTime = 0.15;  // s
 inline constexpr double kCreepSpeed = 0.3;       // px/s
 inline constexpr double kTimeToSleep = 0.5;      // s
 
+// 5.9's joints (joints.h): how stiff a rod, a pin, a weld and a slider are, as a
+// spring of this frequency and damping ratio pulling each error back (Box2D v3's
+// defaults for its joints; README.md, "Soft constraints").
+inline constexpr double kJointHertz = 0.0;         // 1/s
+inline constexpr double kJointDampingRatio = 2.0;  // 1: critical; more: slower, with no overshoot
+
 struct WorldSettings {
     double width = 800.0;   // px, the canvas
     double height = 450.0;  // px
@@ -117,6 +123,8 @@ struct WorldSettings {
     // through a thin wall. On unless a scene turns it off; off, every scene runs as in
     // 5.5, bit for bit, and on it changes nothing in a step with no fast shape.
     bool continuous = true;
+    double joint_hertz = kJointHertz;
+    double joint_damping_ratio = kJointDampingRatio;
 
     friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };

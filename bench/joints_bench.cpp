@@ -1,0 +1,249 @@
+// 5.9's joints beside Box2D 2.4's (issue 39): the chain and the bridge of the stage's
+// tests (tests/stages/s5_9_test.cpp), built once in px and given to both engines, Box2D
+// at 30 px to the metre. For each engine and each number of velocity iterations: the
+// cost of a step (ms, the median of the run's steps) against what the joints let go:
+// the largest gap at any pin over the run, and the most the chain grew (the gaps
+// summed), px. A point further down and to the left is better on both.
+//   build/joints_bench              the table (a few seconds)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <memory>
+#include <numbers>
+#include <string_view>
+#include <vector>
+
+#include "browser.h"
+#include "circle.h"
+#include "core.h"
+#include "joints.h"
+#include "rectangle.h"
+
+#if BENCH_HAS_BOX2D
+#include <box2d/box2d.h>
+#endif
+
+namespace {
+
+using lib::Vec2;
+
+constexpr double kPixelsPerMetre = 30.0;
+constexpr double kGravity = 300.0;  // px/s^2: 10 m/s^2
+constexpr double kDt = 1.0 / 60.0;
+constexpr int kSteps = 600;  // 10 s
+
+// A scene of boxes and discs joined by pins, in px.
+struct Piece {
+    bool disc = false;
+    Vec2 center;
+    double width = 0.0, height = 0.0, radius = 0.0, angle = 0.0;
+    double mass = 1.0;  // 0: static
+    double friction = 0.6;
+};
+struct Pin {
+    std::size_t a, b;
+    Vec2 anchor;
+};
+struct JointScene {
+    const char* name;
+    std::vector<Piece> pieces;
+    std::vector<Pin> pins;
+    // A piece added after this many steps (the bridge's load), or none.
+    std::optional<Piece> dropped;
+    int drop_at = 0;
+};
+
+// 40 links of 20 x 5 px from a post, released level, a disc of 10 links' mass at the end.
+JointScene chain() {
+    JointScene scene{.name = "chain: 40 links, load 10:1", .pieces = {}, .pins = {}, .dropped = {}, .drop_at = 0};
+    const Vec2 start{40, 40};
+    scene.pieces.push_back({.disc = true, .center = start, .radius = 2, .mass = 0});
+    for (int i = 0; i < 40; ++i) {
+        scene.pieces.push_back({.center = start + Vec2{20.0 * (i + 0.5), 0}, .width = 20, .height = 5});
+        scene.pins.push_back({scene.pieces.size() - 2, scene.pieces.size() - 1, start + Vec2{20.0 * i, 0}});
+    }
+    scene.pieces.push_back({.disc = true, .center = start + Vec2{808, 0}, .radius = 8, .mass = 10});
+    scene.pins.push_back({scene.pieces.size() - 2, scene.pieces.size() - 1, start + Vec2{800, 0}});
+    return scene;
+}
+
+// 50 planks of 16 x 4 px on a sagging arc between two posts 760 px apart (the planks
+// span 800), and at 1 s a 40 px box of 100 planks' mass dropped on the middle.
+JointScene bridge() {
+    JointScene scene{.name = "bridge: 50 planks, box 100:1", .pieces = {}, .pins = {}, .dropped = {}, .drop_at = 60};
+    // A circular arc of length 800 over a chord of 760: sin(t) / t = 0.95.
+    double half_angle = 0.5;
+    for (int i = 0; i < 50; ++i) half_angle -= (std::sin(half_angle) / half_angle - 0.95) / ((half_angle * std::cos(half_angle) - std::sin(half_angle)) / (half_angle * half_angle));
+    const double radius = 400.0 / half_angle;
+    const Vec2 middle{400, 200 - radius * std::cos(half_angle)};  // the arc's centre, above
+    const auto on_arc = [&](double s) {  // s in [0, 800] along the arc, left to right
+        const double a = -half_angle + 2 * half_angle * s / 800.0;
+        return middle + Vec2{radius * std::sin(a), radius * std::cos(a)};
+    };
+    scene.pieces.push_back({.disc = true, .center = on_arc(0), .radius = 2, .mass = 0});
+    for (int i = 0; i < 50; ++i) {
+        const Vec2 from = on_arc(16.0 * i), to = on_arc(16.0 * (i + 1));
+        scene.pieces.push_back({.center = (from + to) * 0.5,
+                                .width = from.distance(to),
+                                .height = 4,
+                                .angle = std::atan2(to.y - from.y, to.x - from.x)});
+        scene.pins.push_back({scene.pieces.size() - 2, scene.pieces.size() - 1, from});
+    }
+    scene.pieces.push_back({.disc = true, .center = on_arc(800), .radius = 2, .mass = 0});
+    scene.pins.push_back({scene.pieces.size() - 2, scene.pieces.size() - 1, on_arc(800)});
+    scene.dropped = Piece{.center = {400, 200 + radius * (1 - std::cos(half_angle)) - 23}, .width = 40, .height = 40, .mass = 100};
+    if (std::getenv("NO_BOX")) scene.dropped.reset();
+    if (const char* mass = std::getenv("BOX_MASS")) scene.dropped->mass = std::atof(mass);
+    return scene;
+}
+
+struct Result {
+    double ms_per_step = 0.0;
+    double largest_gap = 0.0;  // px
+    double most_added = 0.0;   // px
+};
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The stage's engine.
+Result runStage(const JointScene& scene, int iterations) {
+    engine::WorldSettings world = engine::kBookWorld;
+    world.solver = engine::SolverKind::sequential_impulse;
+    world.gravity = {0, kGravity};
+    world.velocity_iterations = iterations;
+    world.remove_out_of_bounds = false;
+    world.sleep = false;
+    browser::Window window(kDt * 1000.0);
+    engine::Core core(window, world);
+    const auto add = [&core](const Piece& piece) -> engine::RigidShape& {
+        const engine::PhysicalAttributes attributes{.mass = piece.mass, .friction = piece.friction, .restitution = 0.0};
+        engine::RigidShape& shape = piece.disc ? static_cast<engine::RigidShape&>(
+                                                     core.add(engine::Circle(piece.center, piece.radius, attributes)))
+                                               : core.add(engine::Rectangle(piece.center, piece.width, piece.height, attributes));
+        shape.rotate(piece.angle);
+        return shape;
+    };
+    for (const Piece& piece : scene.pieces) add(piece);
+    for (const Pin& pin : scene.pins) {
+        core.join(engine::pinAt(engine::JointType::revolute, core.object(pin.a), core.object(pin.b), pin.anchor));
+    }
+    Result result;
+    std::vector<double> times;
+    for (int step = 0; step < kSteps; ++step) {
+        if (scene.dropped && step == scene.drop_at) add(*scene.dropped);
+        const Clock::time_point start = Clock::now();
+        core.update();
+        times.push_back(msSince(start));
+        double added = 0.0;
+        for (std::size_t k = 0; k < scene.pins.size(); ++k) {
+            const engine::JointDefinition& joint = core.joints().all()[k].definition;
+            const double gap = engine::separationOf(joint, core.object(scene.pins[k].a), core.object(scene.pins[k].b));
+            added += gap;
+            result.largest_gap = std::max(result.largest_gap, gap);
+        }
+        result.most_added = std::max(result.most_added, added);
+    }
+    result.ms_per_step = median(times);
+    return result;
+}
+
+#if BENCH_HAS_BOX2D
+b2Vec2 metres(Vec2 px) {
+    return {static_cast<float>(px.x / kPixelsPerMetre), static_cast<float>(px.y / kPixelsPerMetre)};
+}
+Vec2 pixels(b2Vec2 m) { return Vec2{m.x, m.y} * kPixelsPerMetre; }
+
+// Box2D 2.4, 3 position iterations (its default), the same pieces and pins.
+Result runBox2d(const JointScene& scene, int iterations) {
+    b2World world(b2Vec2(0.0f, static_cast<float>(kGravity / kPixelsPerMetre)));
+    world.SetContinuousPhysics(false);
+    world.SetAllowSleeping(false);
+    std::vector<b2Body*> bodies;
+    const auto add = [&](const Piece& piece) {
+        b2BodyDef definition;
+        definition.type = piece.mass > 0 ? b2_dynamicBody : b2_staticBody;
+        definition.position = metres(piece.center);
+        definition.angle = static_cast<float>(piece.angle);
+        b2Body* body = world.CreateBody(&definition);
+        b2FixtureDef fixture;
+        b2PolygonShape box;
+        b2CircleShape disc;
+        double area = 0.0;
+        if (piece.disc) {
+            disc.m_radius = static_cast<float>(piece.radius / kPixelsPerMetre);
+            fixture.shape = &disc;
+            area = std::numbers::pi * disc.m_radius * disc.m_radius;
+        } else {
+            box.SetAsBox(static_cast<float>(piece.width / 2 / kPixelsPerMetre),
+                         static_cast<float>(piece.height / 2 / kPixelsPerMetre));
+            fixture.shape = &box;
+            area = piece.width * piece.height / (kPixelsPerMetre * kPixelsPerMetre);
+        }
+        fixture.density = piece.mass > 0 ? static_cast<float>(piece.mass / area) : 0.0f;
+        fixture.friction = static_cast<float>(piece.friction);
+        body->CreateFixture(&fixture);
+        bodies.push_back(body);
+    };
+    for (const Piece& piece : scene.pieces) add(piece);
+    std::vector<b2Joint*> joints;
+    for (const Pin& pin : scene.pins) {
+        b2RevoluteJointDef definition;
+        definition.Initialize(bodies[pin.a], bodies[pin.b], metres(pin.anchor));
+        joints.push_back(world.CreateJoint(&definition));
+    }
+    Result result;
+    std::vector<double> times;
+    for (int step = 0; step < kSteps; ++step) {
+        if (scene.dropped && step == scene.drop_at) add(*scene.dropped);
+        const Clock::time_point start = Clock::now();
+        world.Step(static_cast<float>(kDt), iterations, 3);
+        times.push_back(msSince(start));
+        double added = 0.0;
+        for (b2Joint* joint : joints) {
+            const double gap = pixels(joint->GetAnchorA()).distance(pixels(joint->GetAnchorB()));
+            added += gap;
+            result.largest_gap = std::max(result.largest_gap, gap);
+        }
+        result.most_added = std::max(result.most_added, added);
+    }
+    result.ms_per_step = median(times);
+    return result;
+}
+#endif
+
+void print(std::string_view engine_name, int iterations, const Result& result) {
+    std::printf("| %-18.*s | %10d | %8.3f | %15.2f | %15.2f |\n", static_cast<int>(engine_name.size()),
+                engine_name.data(), iterations, result.ms_per_step, result.largest_gap, result.most_added);
+}
+
+}  // namespace
+
+int main(int argc, char**) {
+    if (argc > 1) {
+        std::fprintf(stderr, "joints_bench: takes no arguments\n");
+        return 2;
+    }
+    for (const JointScene& scene : {chain(), bridge()}) {
+        std::printf("\n%s, 10 s at 60 Hz\n\n", scene.name);
+        std::printf("| engine             | iterations | ms/step  | largest gap, px | most added, px  |\n");
+        std::printf("| ---                | ---        | ---      | ---             | ---             |\n");
+        for (const int iterations : {4, 8, 16, 32}) print("5.9", iterations, runStage(scene, iterations));
+#if BENCH_HAS_BOX2D
+        for (const int iterations : {4, 8, 16, 32}) print("Box2D 2.4", iterations, runBox2d(scene, iterations));
+#else
+        std::printf("(Box2D 2.4 not found: no reference rows)\n");
+#endif
+    }
+    return 0;
+}

@@ -1,0 +1,492 @@
+#include "joints.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "contact_solver.h"
+#include "islands.h"
+
+namespace engine {
+
+namespace {
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+// A distance joint whose anchors are closer than this has no direction to push along
+// this step (the rod's length is then 0 px to rounding): its rows wait for the next.
+constexpr double kShortestLink = 1e-9;  // px
+
+// A point fixed in a body's frame, turned as the body is now.
+Vec2 turned(Vec2 local, double angle) { return local.rotate({}, angle); }
+Vec2 unturned(Vec2 world, double angle) { return world.rotate({}, -angle); }
+
+// The velocity a spin w gives a point at arm r from the centre: w x r.
+Vec2 spinAt(double w, Vec2 arm) { return {-w * arm.y, w * arm.x}; }
+
+// Where a joint's anchors are now, and what the step needs of them.
+struct Frame {
+    Vec2 arm_a, arm_b;  // centre to anchor, world px
+    Vec2 gap;           // anchor b less anchor a
+    double angle = 0.0;  // b's angle less a's, less the reference
+};
+
+Frame frameOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+    Frame frame;
+    frame.arm_a = turned(joint.local_a, a.angle());
+    frame.arm_b = turned(joint.local_b, b.angle());
+    frame.gap = (b.center() + frame.arm_b) - (a.center() + frame.arm_a);
+    frame.angle = b.angle() - a.angle() - joint.reference_angle;
+    return frame;
+}
+
+// A slider's axis as a's turn has carried it, and the direction across it.
+Vec2 axisOf(const JointDefinition& joint, const RigidShape& a) { return turned(joint.local_axis, a.angle()); }
+Vec2 across(Vec2 axis) { return {-axis.y, axis.x}; }
+
+// A pair of bodies as the joints keep them apart: the smaller id first.
+std::pair<BodyId, BodyId> orderedPair(BodyId a, BodyId b) { return {std::min(a, b), std::max(a, b)}; }
+
+// 1 / k, or 0 where nothing answers the impulse (two static bodies, no turning).
+double inverseOr0(double k) { return k > 0.0 ? 1.0 / k : 0.0; }
+
+}  // namespace
+
+std::string_view jointTypeName(JointType type) {
+    switch (type) {
+        case JointType::revolute: return "revolute";
+        case JointType::distance: return "distance";
+        case JointType::weld: return "weld";
+        case JointType::prismatic: return "prismatic";
+    }
+    return {};
+}
+
+JointDefinition pinAt(JointType type, const RigidShape& a, const RigidShape& b, Vec2 anchor) {
+    JointDefinition joint;
+    joint.type = type;
+    joint.body_a = a.id();
+    joint.body_b = b.id();
+    joint.local_a = unturned(anchor - a.center(), a.angle());
+    joint.local_b = unturned(anchor - b.center(), b.angle());
+    joint.reference_angle = b.angle() - a.angle();
+    return joint;
+}
+
+JointDefinition linkBetween(const RigidShape& a, const RigidShape& b, std::pair<Vec2, Vec2> anchors) {
+    JointDefinition joint;
+    joint.type = JointType::distance;
+    joint.body_a = a.id();
+    joint.body_b = b.id();
+    joint.local_a = unturned(anchors.first - a.center(), a.angle());
+    joint.local_b = unturned(anchors.second - b.center(), b.angle());
+    joint.reference_angle = b.angle() - a.angle();
+    joint.length = anchors.first.distance(anchors.second);
+    return joint;
+}
+
+std::pair<Vec2, Vec2> anchorsOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+    return {a.center() + turned(joint.local_a, a.angle()), b.center() + turned(joint.local_b, b.angle())};
+}
+
+double positionOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+    const Frame frame = frameOf(joint, a, b);
+    switch (joint.type) {
+        case JointType::distance: return frame.gap.length();
+        case JointType::prismatic: return axisOf(joint, a).dot(frame.gap);
+        case JointType::revolute:
+        case JointType::weld: break;
+    }
+    return frame.angle;
+}
+
+double separationOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+    const Frame frame = frameOf(joint, a, b);
+    switch (joint.type) {
+        case JointType::revolute:
+        case JointType::weld: return frame.gap.length();
+        case JointType::prismatic: return std::abs(across(axisOf(joint, a)).dot(frame.gap));
+        case JointType::distance: break;
+    }
+    const double length = frame.gap.length();
+    if (joint.length_range) {
+        return std::max({0.0, joint.length_range->lower - length, length - joint.length_range->upper});
+    }
+    if (joint.hertz > 0.0) return 0.0;  // a spring's stretch is its working, not an error
+    return std::abs(length - joint.length);
+}
+
+// A spring of stiffness k = m w^2 and damping c = 2 m zeta w (w = 2 pi f), stepped by
+// implicit Euler over h, asks each step for the impulse
+//     -m (h w^2 C + a2 Cdot) / (1 + a2),   a2 = h w (2 zeta + h w)
+// (README.md, "Soft constraints"), which is the three numbers below.
+Softness softness(double hertz, double damping_ratio, double dt) {
+    if (hertz <= 0.0) return {};
+    const double omega = 2.0 * std::numbers::pi * hertz;
+    const double a1 = 2.0 * damping_ratio + dt * omega;
+    const double a2 = dt * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    return {.bias_rate = omega / a1, .mass_scale = a2 * a3, .impulse_scale = a3};
+}
+
+void Joints::add(const Joint& joint) {
+    joints_.push_back(joint);
+    const JointDefinition& added = joint.definition;
+    if (!added.collide_connected) {
+        apart_.push_back(orderedPair(added.body_a, added.body_b));
+        std::sort(apart_.begin(), apart_.end());
+    }
+}
+
+void Joints::forgetBody(BodyId body) {
+    std::erase_if(joints_, [body](const Joint& joint) {
+        return joint.definition.body_a == body || joint.definition.body_b == body;
+    });
+    std::erase_if(apart_, [body](const auto& pair) { return pair.first == body || pair.second == body; });
+}
+
+bool Joints::keepsApart(BodyId a, BodyId b) const {
+    return !apart_.empty() && std::binary_search(apart_.begin(), apart_.end(), orderedPair(a, b));
+}
+
+bool Joints::startStep(ShapeList shapes, Islands& islands) {
+    // The list holds its shapes in the order the world took them in, and ids only go
+    // up (rigid_shape.h), so it is sorted by id: a body is found by bisection.
+    const auto place = [shapes](BodyId id) -> std::optional<std::size_t> {
+        const auto found = std::lower_bound(shapes.begin(), shapes.end(), id,
+                                            [](const auto& shape, BodyId wanted) { return shape->id() < wanted; });
+        if (found == shapes.end() || (*found)->id() != id) return std::nullopt;
+        return static_cast<std::size_t>(found - shapes.begin());
+    };
+    places_.assign(joints_.size(), std::nullopt);
+    bool woke = false;
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+        const std::optional<std::size_t> a = place(joints_[k].definition.body_a);
+        const std::optional<std::size_t> b = place(joints_[k].definition.body_b);
+        if (!a || !b) continue;
+        places_[k] = {*a, *b};
+        woke = islands.joined(shapes, *a, *b) || woke;
+    }
+    return woke;
+}
+
+void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world) {
+    prepared_.clear();
+    const Softness stiff = softness(world.joint_hertz, world.joint_damping_ratio, world.dt);
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+        if (!places_[k]) continue;
+        const auto [a, b] = *places_[k];
+        const RigidShape& shape_a = *shapes[a];
+        const RigidShape& shape_b = *shapes[b];
+        // Nothing moves two resting bodies: a sleeping island keeps its totals for when
+        // it wakes, as 5.5's contacts do.
+        if (shape_a.isResting() && shape_b.isResting()) continue;
+        Joint& joint = joints_[k];
+        if (!world.warm_starting) joint.impulses = {};
+        const JointDefinition& definition = joint.definition;
+        const SolverBody& body_a = bodies[a];
+        const SolverBody& body_b = bodies[b];
+        const double inv_mass_sum = body_a.inv_mass + body_b.inv_mass;
+        Frame frame = frameOf(definition, shape_a, shape_b);
+        if (!world.rotation) frame.arm_a = frame.arm_b = {};  // impulses act through the centres
+
+        Prepared prepared{.joint = k, .a = a, .b = b};
+        const auto addRow = [&](Row row) { prepared.rows[prepared.row_count++] = row; };
+        // A row along `direction` at the anchors (none: a turn), its mass worked out here.
+        const auto row = [&](Vec2 direction, double turn_a, double turn_b, double JointImpulses::*total) {
+            Row made{.direction = direction, .turn_a = turn_a, .turn_b = turn_b, .total = total};
+            made.mass = inverseOr0(inv_mass_sum * direction.dot(direction) + turn_a * turn_a * body_a.inv_inertia +
+                                   turn_b * turn_b * body_b.inv_inertia);
+            return made;
+        };
+        // An equation C = 0, pulled back softly.
+        const auto equation = [&](Row made, double error, Softness soft) {
+            made.bias = soft.bias_rate * error;
+            made.mass_scale = soft.mass_scale;
+            made.impulse_scale = soft.impulse_scale;
+            made.lowest = -kUnbounded;
+            made.highest = kUnbounded;
+            addRow(made);
+        };
+        // A limit C >= 0. While C > 0 the row only keeps the joint from passing the
+        // limit within this step (it may close the gap C, no more): a speculative limit,
+        // which never pulls. Past the limit it pushes back as softly as an equation.
+        const auto limit = [&](Row made, double error) {
+            if (error > 0.0) {
+                made.bias = error / world.dt;
+            } else {
+                made.bias = stiff.bias_rate * error;
+                made.mass_scale = stiff.mass_scale;
+                made.impulse_scale = stiff.impulse_scale;
+            }
+            made.lowest = 0.0;
+            made.highest = kUnbounded;
+            addRow(made);
+        };
+        const auto pin = [&] {
+            Pin made{.arm_a = frame.arm_a, .arm_b = frame.arm_b, .bias = frame.gap * stiff.bias_rate, .soft = stiff};
+            const Vec2 ra = frame.arm_a, rb = frame.arm_b;
+            made.k11 = inv_mass_sum + ra.y * ra.y * body_a.inv_inertia + rb.y * rb.y * body_b.inv_inertia;
+            made.k12 = -ra.x * ra.y * body_a.inv_inertia - rb.x * rb.y * body_b.inv_inertia;
+            made.k22 = inv_mass_sum + ra.x * ra.x * body_a.inv_inertia + rb.x * rb.x * body_b.inv_inertia;
+            // Its inverse, once a step: the iterations multiply where they would divide.
+            const double determinant = made.k11 * made.k22 - made.k12 * made.k12;
+            if (determinant > 0.0) {
+                made.inverse11 = made.k22 / determinant;
+                made.inverse12 = -made.k12 / determinant;
+                made.inverse22 = made.k11 / determinant;
+            }
+            prepared.pin = made;
+        };
+
+        switch (definition.type) {
+            case JointType::revolute:
+                if (definition.motor) {
+                    Row motor = row({}, 1.0, 1.0, &JointImpulses::motor);
+                    motor.target_speed = definition.motor->speed;
+                    motor.highest = definition.motor->max_torque * world.dt;
+                    motor.lowest = -motor.highest;
+                    addRow(motor);
+                }
+                if (definition.limit) {
+                    limit(row({}, 1.0, 1.0, &JointImpulses::lower), frame.angle - definition.limit->lower);
+                    limit(row({}, -1.0, -1.0, &JointImpulses::upper), definition.limit->upper - frame.angle);
+                }
+                pin();
+                break;
+            case JointType::weld:
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
+                pin();
+                break;
+            case JointType::prismatic: {
+                // The axis turns with a, so a's arm reaches to b's anchor: (gap + r_a).
+                const Vec2 axis = axisOf(definition, shape_a);
+                const Vec2 normal = across(axis);
+                const Vec2 arm_a = frame.gap + frame.arm_a;
+                if (definition.limit) {
+                    const double translation = axis.dot(frame.gap);
+                    limit(row(axis, arm_a.cross(axis), frame.arm_b.cross(axis), &JointImpulses::lower),
+                          translation - definition.limit->lower);
+                    limit(row(-axis, -arm_a.cross(axis), -frame.arm_b.cross(axis), &JointImpulses::upper),
+                          definition.limit->upper - translation);
+                }
+                equation(row(normal, arm_a.cross(normal), frame.arm_b.cross(normal), &JointImpulses::across),
+                         normal.dot(frame.gap), stiff);
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
+                break;
+            }
+            case JointType::distance: {
+                const double length = frame.gap.length();
+                if (length < kShortestLink) break;
+                const Vec2 along = frame.gap * (1.0 / length);
+                const double turn_a = frame.arm_a.cross(along), turn_b = frame.arm_b.cross(along);
+                if (definition.hertz > 0.0) {
+                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length,
+                             softness(definition.hertz, definition.damping_ratio, world.dt));
+                } else if (!definition.length_range) {
+                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length, stiff);
+                }
+                if (definition.length_range) {
+                    limit(row(along, turn_a, turn_b, &JointImpulses::lower), length - definition.length_range->lower);
+                    limit(row(-along, -turn_a, -turn_b, &JointImpulses::upper), definition.length_range->upper - length);
+                }
+                break;
+            }
+        }
+        prepared_.push_back(prepared);
+    }
+}
+
+namespace {
+
+// An impulse `amount` along a row: b gets it, a the same turned round.
+void pushRow(SolverBody& a, SolverBody& b, Vec2 direction, double turn_a, double turn_b, double amount) {
+    a.velocity.linear -= direction * (amount * a.inv_mass);
+    a.velocity.angular -= turn_a * amount * a.inv_inertia;
+    b.velocity.linear += direction * (amount * b.inv_mass);
+    b.velocity.angular += turn_b * amount * b.inv_inertia;
+}
+
+// An impulse at a pin's anchors: b gets it, a the same turned round.
+void pushPin(SolverBody& a, SolverBody& b, Vec2 arm_a, Vec2 arm_b, Vec2 impulse) {
+    a.velocity.linear -= impulse * a.inv_mass;
+    a.velocity.angular -= arm_a.cross(impulse) * a.inv_inertia;
+    b.velocity.linear += impulse * b.inv_mass;
+    b.velocity.angular += arm_b.cross(impulse) * b.inv_inertia;
+}
+
+}  // namespace
+
+void Joints::warmStart(std::vector<SolverBody>& bodies) const {
+    for (const Prepared& prepared : prepared_) {
+        const JointImpulses& totals = joints_[prepared.joint].impulses;
+        SolverBody& a = bodies[prepared.a];
+        SolverBody& b = bodies[prepared.b];
+        for (std::size_t r = 0; r < prepared.row_count; ++r) {
+            const Row& row = prepared.rows[r];
+            pushRow(a, b, row.direction, row.turn_a, row.turn_b, totals.*row.total);
+        }
+        if (prepared.pin) pushPin(a, b, prepared.pin->arm_a, prepared.pin->arm_b, totals.point);
+    }
+}
+
+// Gauss-Seidel, as the contacts: each row in turn gets the impulse that puts its own
+// speed right (less the soft share), as the rows before it left the bodies; the pin
+// last, so that of all a joint's rows it is the one an iteration ends on.
+void Joints::solve(std::vector<SolverBody>& bodies) {
+    for (const Prepared& prepared : prepared_) {
+        JointImpulses& totals = joints_[prepared.joint].impulses;
+        SolverBody& a = bodies[prepared.a];
+        SolverBody& b = bodies[prepared.b];
+        for (std::size_t r = 0; r < prepared.row_count; ++r) {
+            const Row& row = prepared.rows[r];
+            const double speed = row.direction.dot(b.velocity.linear - a.velocity.linear) +
+                                 row.turn_b * b.velocity.angular - row.turn_a * a.velocity.angular;
+            double& total = totals.*row.total;
+            const double impulse =
+                -row.mass_scale * row.mass * (speed - row.target_speed + row.bias) - row.impulse_scale * total;
+            const double clamped = std::clamp(total + impulse, row.lowest, row.highest);
+            pushRow(a, b, row.direction, row.turn_a, row.turn_b, clamped - total);
+            total = clamped;
+        }
+        if (!prepared.pin) continue;
+        const Pin& pin = *prepared.pin;
+        // The speed at which the anchors part, and the impulse that, with the soft
+        // share, stops it: K impulse = -(speed + bias), K the pin's 2 x 2 effective mass.
+        const Vec2 speed = b.velocity.linear + spinAt(b.velocity.angular, pin.arm_b) - a.velocity.linear -
+                           spinAt(a.velocity.angular, pin.arm_a);
+        const Vec2 wanted = speed + pin.bias;
+        const Vec2 solved{pin.inverse11 * wanted.x + pin.inverse12 * wanted.y,
+                          pin.inverse12 * wanted.x + pin.inverse22 * wanted.y};
+        const Vec2 impulse = solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
+        pushPin(a, b, pin.arm_a, pin.arm_b, impulse);
+        totals.point += impulse;
+    }
+}
+
+namespace {
+
+// The most a positional pass moves a rod along itself, px: a rod stretched by a whole
+// link in one step is pulled back over a few steps, not thrown.
+constexpr double kLongestJointShift = 6.0;
+
+// Moves and turns the pair by an impulse-like `amount` along `direction` at the arms
+// (a turn alone when the direction is 0): each by its inverse mass and inertia, as an
+// impulse would change its velocity, but applied to its position.
+void shiftAlong(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double amount,
+                bool rotation) {
+    a.move(direction * (-amount * a.invMass()));
+    b.move(direction * (amount * b.invMass()));
+    if (!rotation) return;
+    a.rotate(-turn_a * amount * a.invInertia());
+    b.rotate(turn_b * amount * b.invInertia());
+}
+
+double correctionMass(const RigidShape& a, const RigidShape& b, Vec2 direction, double turn_a, double turn_b,
+                      bool rotation) {
+    const double turning = rotation ? turn_a * turn_a * a.invInertia() + turn_b * turn_b * b.invInertia() : 0.0;
+    return inverseOr0((a.invMass() + b.invMass()) * direction.dot(direction) + turning);
+}
+
+// One limit C >= 0 pushed back when passed (C < 0), not pulled when within.
+void correctLimit(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double error,
+                  bool rotation) {
+    if (error >= 0.0) return;
+    const double amount = -std::max(error, -kLongestJointShift) *
+                          correctionMass(a, b, direction, turn_a, turn_b, rotation);
+    shiftAlong(a, b, direction, turn_a, turn_b, amount, rotation);
+}
+
+// An equation C = 0 put right in one go (a rod's, cut at kLongestJointShift).
+void correctEquation(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double error,
+                     bool rotation) {
+    const double amount = -std::clamp(error, -kLongestJointShift, kLongestJointShift) *
+                          correctionMass(a, b, direction, turn_a, turn_b, rotation);
+    shiftAlong(a, b, direction, turn_a, turn_b, amount, rotation);
+}
+
+// A pin's two anchors made one point: the 2 x 2 system K x = -gap on the positions.
+void correctPin(RigidShape& a, RigidShape& b, const JointDefinition& joint, bool rotation) {
+    const Frame frame = frameOf(joint, a, b);
+    const Vec2 ra = rotation ? frame.arm_a : Vec2{}, rb = rotation ? frame.arm_b : Vec2{};
+    const double ia = rotation ? a.invInertia() : 0.0, ib = rotation ? b.invInertia() : 0.0;
+    const double mass_sum = a.invMass() + b.invMass();
+    const double k11 = mass_sum + ra.y * ra.y * ia + rb.y * rb.y * ib;
+    const double k12 = -ra.x * ra.y * ia - rb.x * rb.y * ib;
+    const double k22 = mass_sum + ra.x * ra.x * ia + rb.x * rb.x * ib;
+    const double determinant = k11 * k22 - k12 * k12;
+    if (determinant <= 0.0) return;
+    // Cut as a rod's, so that a pin torn wide is closed over a few steps, not thrown.
+    const double length = frame.gap.length();
+    const Vec2 gap = length > kLongestJointShift ? frame.gap * (kLongestJointShift / length) : frame.gap;
+    const Vec2 impulse{-(k22 * gap.x - k12 * gap.y) / determinant, -(k11 * gap.y - k12 * gap.x) / determinant};
+    a.move(impulse * -a.invMass());
+    b.move(impulse * b.invMass());
+    if (!rotation) return;
+    a.rotate(-ra.cross(impulse) * ia);
+    b.rotate(rb.cross(impulse) * ib);
+}
+
+}  // namespace
+
+void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
+    if (!world.positional_correction || !world.movement) return;
+    const bool rotation = world.rotation;
+    for (int pass = 0; pass < world.position_iterations; ++pass) {
+        for (std::size_t k = 0; k < joints_.size(); ++k) {
+            if (!places_[k]) continue;
+            RigidShape& a = *shapes[places_[k]->first];
+            RigidShape& b = *shapes[places_[k]->second];
+            if (a.isResting() && b.isResting()) continue;
+            const JointDefinition& joint = joints_[k].definition;
+            const Frame frame = frameOf(joint, a, b);
+            switch (joint.type) {
+                case JointType::revolute:
+                    if (joint.limit) {
+                        correctLimit(a, b, {}, 1.0, 1.0, frame.angle - joint.limit->lower, rotation);
+                        correctLimit(a, b, {}, -1.0, -1.0, joint.limit->upper - frame.angle, rotation);
+                    }
+                    correctPin(a, b, joint, rotation);
+                    break;
+                case JointType::weld:
+                    correctEquation(a, b, {}, 1.0, 1.0, frame.angle, rotation);
+                    correctPin(a, b, joint, rotation);
+                    break;
+                case JointType::prismatic: {
+                    correctEquation(a, b, {}, 1.0, 1.0, frame.angle, rotation);
+                    const Frame now = frameOf(joint, a, b);
+                    const Vec2 axis = axisOf(joint, a), normal = across(axis);
+                    const Vec2 arm_a = now.gap + now.arm_a;
+                    correctEquation(a, b, normal, arm_a.cross(normal), now.arm_b.cross(normal), normal.dot(now.gap),
+                                    rotation);
+                    if (joint.limit) {
+                        const Frame last = frameOf(joint, a, b);
+                        const double translation = axis.dot(last.gap);
+                        const Vec2 reach = last.gap + last.arm_a;
+                        correctLimit(a, b, axis, reach.cross(axis), last.arm_b.cross(axis),
+                                     translation - joint.limit->lower, rotation);
+                        correctLimit(a, b, -axis, -reach.cross(axis), -last.arm_b.cross(axis),
+                                     joint.limit->upper - translation, rotation);
+                    }
+                    break;
+                }
+                case JointType::distance: {
+                    const double length = frame.gap.length();
+                    if (length < kShortestLink) break;
+                    const Vec2 along = frame.gap * (1.0 / length);
+                    const double turn_a = frame.arm_a.cross(along), turn_b = frame.arm_b.cross(along);
+                    if (joint.length_range) {
+                        correctLimit(a, b, along, turn_a, turn_b, length - joint.length_range->lower, rotation);
+                        correctLimit(a, b, -along, -turn_a, -turn_b, joint.length_range->upper - length, rotation);
+                    } else if (joint.hertz == 0.0) {
+                        correctEquation(a, b, along, turn_a, turn_b, length - joint.length, rotation);
+                    }
+                    break;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace engine

@@ -1,0 +1,203 @@
+#pragma once
+// Joints (not in the book: its "Further Exploration" names them, p. 111, "joints (for
+// more complex rigid body behavior)", and points to Box2D and Erin Catto). A joint ties
+// two bodies together: a pin (revolute), a rod, spring or rope (distance), a weld, or a
+// slider (prismatic). Each is a few constraints, equations the positions must keep, such
+// as "the two anchors are one point"; and like a contact, each is solved by impulses on
+// 5.4's sequential impulse solver (contact_solver.h), in the same iterations, warm
+// started from what it applied in the last step.
+//
+// Soft constraints (Catto, "Soft Constraints", GDC 2011; README.md derives them in px
+// and s). A constraint C = 0 that drifted to C != 0 is pulled back as a spring and damper
+// would pull it: of frequency f (hertz) and damping ratio zeta. Solved implicitly over
+// one step h, that spring gives each impulse three numbers:
+//     impulse = -mass_scale * m (Cdot + bias_rate * C) - impulse_scale * total
+// where m is the constraint's effective mass and total what the step applied so far. A
+// rod or a pin takes the world's joint_hertz and joint_damping_ratio: stiff, but soft
+// enough that an error is removed over a few steps rather than thrown back in one (which
+// would add energy, as Baumgarte's bias does). A distance joint's own "hertz" makes it a
+// real spring: the same three numbers, a softer f.
+//
+// Two bodies a joint joins do not collide with each other (a chain's links overlap at
+// their pins), unless it says "collide_connected" (Box2D's collideConnected). A joint
+// holds its bodies together in one island (islands.h): they sleep and wake together.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "rigid_shape.h"
+#include "world_settings.h"
+
+namespace engine {
+
+struct SolverBody;  // contact_solver.h: a body's velocities as the solver works on them
+class Islands;
+
+enum class JointType { revolute, distance, weld, prismatic };
+
+// A range a joint keeps between two numbers: an angle (rad), a translation or a length
+// (px). Not there: no limit.
+struct JointRange {
+    double lower = 0.0;
+    double upper = 0.0;
+};
+
+// A revolute joint's motor: it drives the relative spin toward `speed` (rad/s) with a
+// torque of at most `max_torque` (mass px^2 / s^2).
+struct JointMotor {
+    double speed = 0.0;
+    double max_torque = 0.0;
+};
+
+// What a joint is: its bodies (by id, rigid_shape.h: the id survives a removal before
+// it in the list), where it holds each, and its kind's settings.
+struct JointDefinition {
+    JointType type = JointType::revolute;
+    BodyId body_a = 0;
+    BodyId body_b = 0;
+    // The anchors in each body's own frame: px from its centre, as if it were unturned.
+    Vec2 local_a;
+    Vec2 local_b;
+    // The angle of b less the angle of a when joined (revolute, weld, prismatic): the
+    // joint's angle is measured from there.
+    double reference_angle = 0.0;
+    Vec2 local_axis;  // prismatic: the slider's direction, a unit vector in a's frame
+    // Revolute: the joint's angle; prismatic: the translation along the axis, px.
+    std::optional<JointRange> limit;
+    std::optional<JointMotor> motor;  // revolute
+    // Distance: the length it holds (a rod), or rests at (a spring), px; a spring's
+    // frequency (0: a rod, as stiff as the world's joints) and damping ratio; a rope's
+    // range (the length may go anywhere in it, and no further).
+    double length = 0.0;
+    double hertz = 0.0;
+    double damping_ratio = 0.0;
+    std::optional<JointRange> length_range;
+    bool collide_connected = false;
+};
+
+// What a joint keeps from step to step: the totals of its impulses in the last step,
+// which start the next one (warm starting, as 5.4's contacts).
+struct JointImpulses {
+    Vec2 point;            // revolute, weld: the pin's
+    double across = 0.0;   // prismatic: across the axis
+    double angular = 0.0;  // weld, prismatic: the turn held
+    double axial = 0.0;    // distance: along the rod or spring
+    double lower = 0.0;    // the limit's, each >= 0
+    double upper = 0.0;
+    double motor = 0.0;
+};
+
+struct Joint {
+    JointDefinition definition;
+    JointImpulses impulses;
+};
+
+// The joint that holds `a` and `b` at the world point `anchor` (revolute, weld; a
+// prismatic's anchor is where its axis passes), or, for a distance joint, at the world
+// points anchors.first on a and anchors.second on b, the bodies where they are now.
+JointDefinition pinAt(JointType type, const RigidShape& a, const RigidShape& b, Vec2 anchor);
+JointDefinition linkBetween(const RigidShape& a, const RigidShape& b, std::pair<Vec2, Vec2> anchors);
+
+// The two anchors where the bodies hold them now, world px.
+std::pair<Vec2, Vec2> anchorsOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b);
+// How far the joint is from what it holds, px: the gap between a pin's or a weld's two
+// anchors; a rod's length less the length it holds; how far a rope or a spring is past
+// its range (0 inside it); a slider's anchor off its axis. The overlay prints it, the
+// tests bound it.
+double separationOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b);
+// The joint's angle now (rad; revolute, weld), or its translation along the axis (px;
+// prismatic), or its length (px; distance).
+double positionOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b);
+
+// The soft constraint's three numbers for a spring of `hertz` and `damping_ratio` over a
+// step of `dt` (README.md derives them).
+struct Softness {
+    double bias_rate = 0.0;      // 1/s: the share of the error asked back each second
+    double mass_scale = 1.0;     // of the effective mass
+    double impulse_scale = 0.0;  // of the total so far, taken back each iteration
+};
+Softness softness(double hertz, double damping_ratio, double dt);
+
+// The world's joints, and their part of the sequential impulse solver's step.
+class Joints {
+public:
+    void add(const Joint& joint);
+    // A body leaves the world: its joints go with it.
+    void forgetBody(BodyId body);
+    const std::vector<Joint>& all() const { return joints_; }
+    bool empty() const { return joints_.empty(); }
+
+    // Before the step's contacts: finds each joint's bodies in the list (nullopt: a body
+    // gone), joins each pair in one island and wakes a sleeping body joined to an awake
+    // one. Returns whether it woke an island.
+    bool startStep(ShapeList shapes, Islands& islands);
+    // Whether the pair is held by a joint that keeps them from colliding.
+    bool keepsApart(BodyId a, BodyId b) const;
+    // The joints' part of the solver's step, on its bodies (contact_solver.h).
+    void prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world);
+    void warmStart(std::vector<SolverBody>& bodies) const;
+    void solve(std::vector<SolverBody>& bodies);
+    // After the shapes have moved: world.position_iterations passes that move and turn
+    // the bodies themselves until each rigid joint's anchors meet again (Box2D 2.4's
+    // last step for its joints), with positional correction on. A soft constraint pulls
+    // an error back over a few steps; but a link that turns by most of a radian in one
+    // step (the end of a whipping chain) leaves its pin by more than any step's pull
+    // can keep up with, because the velocities are a straight-line guess at an arc. The
+    // passes work on the positions as they are, with no velocity, so they add no energy.
+    // Springs and ropes within their range are left as they are.
+    void correctPositions(ShapeList shapes, const WorldSettings& world);
+
+private:
+    // One scalar constraint as the step solves it: its speed is
+    //     Cdot = direction . (v_b - v_a) + w_b turn_b - w_a turn_a
+    // (an angle's row has no direction and turns of 1), and its total is kept within
+    // [lowest, highest]: an equation's anywhere, a limit's >= 0, a motor's within its
+    // torque times the step.
+    struct Row {
+        Vec2 direction;
+        double turn_a = 0.0;
+        double turn_b = 0.0;
+        double mass = 0.0;          // effective mass: 1 / (the speed a unit impulse makes)
+        double target_speed = 0.0;  // a motor's; 0 for the rest
+        double bias = 0.0;          // the speed asked for to undo the error, bias_rate * C
+        double mass_scale = 1.0;
+        double impulse_scale = 0.0;
+        double lowest = 0.0;
+        double highest = 0.0;
+        double JointImpulses::*total = nullptr;  // where the joint keeps its total
+    };
+    // A pin: two anchors made one point, both directions at once (a 2 x 2 system).
+    struct Pin {
+        Vec2 arm_a, arm_b;  // from each centre to its anchor, world px
+        double k11 = 0.0, k12 = 0.0, k22 = 0.0;                    // K: the speeds unit impulses make
+        double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1 (0: nothing answers)
+        Vec2 bias;  // bias_rate * the gap between the anchors
+        Softness soft;
+    };
+    static constexpr std::size_t kMostRows = 4;
+    struct Prepared {
+        std::size_t joint = 0;
+        std::size_t a = 0, b = 0;
+        std::array<Row, kMostRows> rows;  // a slider's four at most
+        std::size_t row_count = 0;
+        std::optional<Pin> pin;
+    };
+
+    std::vector<Joint> joints_;
+    // Per joint, this step: the places of its bodies in the list (none: not solved).
+    std::vector<std::optional<std::pair<std::size_t, std::size_t>>> places_;
+    std::vector<Prepared> prepared_;
+    // The pairs of body ids (smaller first) of the joints that keep their bodies apart,
+    // sorted.
+    std::vector<std::pair<BodyId, BodyId>> apart_;
+};
+
+// How scene files and refusals spell a joint type.
+std::string_view jointTypeName(JointType type);
+
+}  // namespace engine
