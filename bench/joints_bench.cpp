@@ -5,6 +5,8 @@
 // the largest gap at any pin over the run, and the most the chain grew (the gaps
 // summed), px. A point further down and to the left is better on both.
 //   build/joints_bench              the table (a few seconds)
+//   BOX_MASS=30 build/joints_bench  the bridge's box of another mass (planks are 1)
+//   NO_BOX=1 build/joints_bench     the bridge with nothing on it
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -76,10 +78,12 @@ JointScene bridge() {
     JointScene scene{.name = "bridge: 50 planks, box 100:1", .pieces = {}, .pins = {}, .dropped = {}, .drop_at = 60};
     // A circular arc of length 800 over a chord of 760: sin(t) / t = 0.95.
     double half_angle = 0.5;
-    for (int i = 0; i < 50; ++i) half_angle -= (std::sin(half_angle) / half_angle - 0.95) / ((half_angle * std::cos(half_angle) - std::sin(half_angle)) / (half_angle * half_angle));
+    for (int i = 0; i < 50; ++i)
+        half_angle -= (std::sin(half_angle) / half_angle - 0.95) /
+                      ((half_angle * std::cos(half_angle) - std::sin(half_angle)) / (half_angle * half_angle));
     const double radius = 400.0 / half_angle;
     const Vec2 middle{400, 200 - radius * std::cos(half_angle)};  // the arc's centre, above
-    const auto on_arc = [&](double s) {  // s in [0, 800] along the arc, left to right
+    const auto on_arc = [&](double s) {                           // s in [0, 800] along the arc, left to right
         const double a = -half_angle + 2 * half_angle * s / 800.0;
         return middle + Vec2{radius * std::sin(a), radius * std::cos(a)};
     };
@@ -94,7 +98,8 @@ JointScene bridge() {
     }
     scene.pieces.push_back({.disc = true, .center = on_arc(800), .radius = 2, .mass = 0});
     scene.pins.push_back({scene.pieces.size() - 2, scene.pieces.size() - 1, on_arc(800)});
-    scene.dropped = Piece{.center = {400, 200 + radius * (1 - std::cos(half_angle)) - 23}, .width = 40, .height = 40, .mass = 100};
+    scene.dropped =
+        Piece{.center = {400, 200 + radius * (1 - std::cos(half_angle)) - 23}, .width = 40, .height = 40, .mass = 100};
     if (std::getenv("NO_BOX")) scene.dropped.reset();
     if (const char* mass = std::getenv("BOX_MASS")) scene.dropped->mass = std::atof(mass);
     return scene;
@@ -128,9 +133,10 @@ Result runStage(const JointScene& scene, int iterations) {
     engine::Core core(window, world);
     const auto add = [&core](const Piece& piece) -> engine::RigidShape& {
         const engine::PhysicalAttributes attributes{.mass = piece.mass, .friction = piece.friction, .restitution = 0.0};
-        engine::RigidShape& shape = piece.disc ? static_cast<engine::RigidShape&>(
-                                                     core.add(engine::Circle(piece.center, piece.radius, attributes)))
-                                               : core.add(engine::Rectangle(piece.center, piece.width, piece.height, attributes));
+        engine::RigidShape& shape =
+            piece.disc
+                ? static_cast<engine::RigidShape&>(core.add(engine::Circle(piece.center, piece.radius, attributes)))
+                : core.add(engine::Rectangle(piece.center, piece.width, piece.height, attributes));
         shape.rotate(piece.angle);
         return shape;
     };

@@ -27,8 +27,8 @@ Vec2 spinAt(double w, Vec2 arm) { return {-w * arm.y, w * arm.x}; }
 
 // Where a joint's anchors are now, and what the step needs of them.
 struct Frame {
-    Vec2 arm_a, arm_b;  // centre to anchor, world px
-    Vec2 gap;           // anchor b less anchor a
+    Vec2 arm_a, arm_b;   // centre to anchor, world px
+    Vec2 gap;            // anchor b less anchor a
     double angle = 0.0;  // b's angle less a's, less the reference
 };
 
@@ -289,7 +289,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 }
                 if (definition.length_range) {
                     limit(row(along, turn_a, turn_b, &JointImpulses::lower), length - definition.length_range->lower);
-                    limit(row(-along, -turn_a, -turn_b, &JointImpulses::upper), definition.length_range->upper - length);
+                    limit(row(-along, -turn_a, -turn_b, &JointImpulses::upper),
+                          definition.length_range->upper - length);
                 }
                 break;
             }
@@ -393,8 +394,8 @@ double correctionMass(const RigidShape& a, const RigidShape& b, Vec2 direction, 
 void correctLimit(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double error,
                   bool rotation) {
     if (error >= 0.0) return;
-    const double amount = -std::max(error, -kLongestJointShift) *
-                          correctionMass(a, b, direction, turn_a, turn_b, rotation);
+    const double amount =
+        -std::max(error, -kLongestJointShift) * correctionMass(a, b, direction, turn_a, turn_b, rotation);
     shiftAlong(a, b, direction, turn_a, turn_b, amount, rotation);
 }
 

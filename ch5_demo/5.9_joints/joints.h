@@ -173,10 +173,10 @@ private:
     };
     // A pin: two anchors made one point, both directions at once (a 2 x 2 system).
     struct Pin {
-        Vec2 arm_a, arm_b;  // from each centre to its anchor, world px
+        Vec2 arm_a, arm_b;                                         // from each centre to its anchor, world px
         double k11 = 0.0, k12 = 0.0, k22 = 0.0;                    // K: the speeds unit impulses make
         double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1 (0: nothing answers)
-        Vec2 bias;  // bias_rate * the gap between the anchors
+        Vec2 bias;                                                 // bias_rate * the gap between the anchors
         Softness soft;
     };
     static constexpr std::size_t kMostRows = 4;

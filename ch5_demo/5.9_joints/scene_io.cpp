@@ -56,7 +56,7 @@ constexpr browser::NumberRule kSpeedRule{[](double v) { return std::isfinite(v) 
 // How stiff the world's rigid joints are: a spring of at least 0.1 Hz (softer holds
 // nothing up), at most 1e4 Hz.
 constexpr browser::NumberRule kJointHertzRule{[](double v) { return v == 0.0 || (v >= 0.1 && v <= 1e4); },
-                                          "must be 0 (rigid) or a number in [0.1, 1e4] (1/s)"};
+                                              "must be 0 (rigid) or a number in [0.1, 1e4] (1/s)"};
 constexpr browser::NumberRule kDurationRule{[](double v) { return std::isfinite(v) && v >= 0.0; },
                                             "must be a finite number of s >= 0"};
 
@@ -102,9 +102,9 @@ constexpr std::size_t kMaxJoints = 5000;
 constexpr double kNoLongest = 1e9;  // px
 
 constexpr std::array<std::pair<std::string_view, JointType>, 4> kJointTypes{{{"revolute", JointType::revolute},
-                                                                              {"distance", JointType::distance},
-                                                                              {"weld", JointType::weld},
-                                                                              {"prismatic", JointType::prismatic}}};
+                                                                             {"distance", JointType::distance},
+                                                                             {"weld", JointType::weld},
+                                                                             {"prismatic", JointType::prismatic}}};
 
 bool given(double value) { return !std::isnan(value); }
 
@@ -136,7 +136,8 @@ void checkJoints(const Scene& scene, std::string_view source) {
     const double count = static_cast<double>(scene.bodies.size());
     for (std::size_t k = 0; k < scene.joints.size(); ++k) {
         const JointDescription& joint = scene.joints[k];
-        for (const auto& [index, key] : {std::pair{joint.bodies.x, "bodies[0]"}, std::pair{joint.bodies.y, "bodies[1]"}}) {
+        for (const auto& [index, key] :
+             {std::pair{joint.bodies.x, "bodies[0]"}, std::pair{joint.bodies.y, "bodies[1]"}}) {
             if (index >= count) {
                 refuseJoint(source, k, key,
                             "must name one of the scene's " + std::to_string(scene.bodies.size()) + " bodies, 0 to " +

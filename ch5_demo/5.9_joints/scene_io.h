@@ -49,10 +49,10 @@ struct BodyDescription {
 inline constexpr double kNotGiven = std::numeric_limits<double>::quiet_NaN();
 struct JointDescription {
     JointType type = JointType::revolute;
-    Vec2 bodies;  // the two bodies' places in the scene's body list, as read
-    Vec2 anchor;  // revolute, weld, prismatic: world px at the start
-    std::vector<Vec2> anchors;  // distance: one on each body, world px at the start
-    Vec2 axis;                  // prismatic
+    Vec2 bodies;                     // the two bodies' places in the scene's body list, as read
+    Vec2 anchor;                     // revolute, weld, prismatic: world px at the start
+    std::vector<Vec2> anchors;       // distance: one on each body, world px at the start
+    Vec2 axis;                       // prismatic
     double lower_angle = kNotGiven;  // revolute, rad
     double upper_angle = kNotGiven;
     double motor_speed = kNotGiven;  // revolute, rad/s

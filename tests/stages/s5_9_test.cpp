@@ -50,7 +50,7 @@ double largestSeparation(const engine::Core& core) {
     double largest = 0.0;
     for (const engine::Joint& joint : core.joints().all()) {
         largest = std::max(largest, engine::separationOf(joint.definition, bodyOf(core, joint.definition.body_a),
-                                                        bodyOf(core, joint.definition.body_b)));
+                                                         bodyOf(core, joint.definition.body_b)));
     }
     return largest;
 }
@@ -169,12 +169,12 @@ TEST_CASE("s5_9: a rigid pendulum keeps its energy over 10 s and swings with the
             }
             return sum / count;
         };
-        const double drift = meanBetween(crossings[crossings.size() - 2], crossings.back()) -
-                             meanBetween(crossings[0], crossings[1]);
+        const double drift =
+            meanBetween(crossings[crossings.size() - 2], crossings.back()) - meanBetween(crossings[0], crossings[1]);
         const double expected = small_angle * (1.0 + start * start / 16.0);
         INFO("energy: drift " << drift / swing * 100 << " % of the swing's over " << crossings.size() - 2
-                              << " periods, at most " << deviation / swing * 100 << " % off; largest gap "
-                              << worst_gap << " px; period " << period << " s, closed form " << expected << " s");
+                              << " periods, at most " << deviation / swing * 100 << " % off; largest gap " << worst_gap
+                              << " px; period " << period << " s, closed form " << expected << " s");
         // Symplectic Euler's energy swings by about w dt of itself within a period (w =
         // 2 pi / T: 1.4 % here) and does not drift; the pin's pull may take or give a
         // little as it keeps the bob on its circle.
@@ -198,8 +198,8 @@ TEST_CASE("s5_9: a chain of 40 links with a load of 10 links' mass stretches by 
         worst_gap = std::max(worst_gap, largestSeparation(page.core));
         if (step >= 540) last_second = std::max(last_second, addedLength(page.core));
     }
-    INFO("chain: added length at worst " << worst << " px of 800, largest gap " << worst_gap << " px, in the last second "
-                                         << last_second << " px");
+    INFO("chain: added length at worst " << worst << " px of 800, largest gap " << worst_gap
+                                         << " px, in the last second " << last_second << " px");
     // Box2D 2.4 on the same chain (build/joints_bench): 75.8 px and 2.31 px at 8
     // iterations; this stage 74.5 and 2.40.
     CHECK(worst < 0.1 * 800);  // 10 % at the whip
@@ -253,7 +253,8 @@ TEST_CASE("s5_9: a rope bridge of 50 planks under a box of 100 planks' mass: sep
     const engine::RigidShape* before = &page.core.add(engine::Circle(onArc(0), 2, kStatic));
     for (int i = 0; i < planks; ++i) {
         const Vec2 from = onArc(span / planks * i), to = onArc(span / planks * (i + 1));
-        engine::RigidShape& board = page.core.add(engine::Rectangle((from + to) * 0.5, from.distance(to), 4, {.friction = 0.6}));
+        engine::RigidShape& board =
+            page.core.add(engine::Rectangle((from + to) * 0.5, from.distance(to), 4, {.friction = 0.6}));
         board.rotate(std::atan2(to.y - from.y, to.x - from.x));
         page.core.join(engine::pinAt(engine::JointType::revolute, *before, board, from));
         before = &board;
@@ -355,7 +356,8 @@ TEST_CASE("s5_9: bad joints are refused in one line with exit status 2, and noth
     refuses("length.json",
             joint(R"({"type": "distance", "bodies": [0, 1], "anchors": [[100, 100], [100, 150]], "length": -5})"),
             "joints[0].length: must be a number of px in [0, 1e6]");
-    refuses("infinite.json", joint(R"({"type": "weld", "bodies": [0, 1], "anchor": [1e999, 100]})"), "joints[0].anchor");
+    refuses("infinite.json", joint(R"({"type": "weld", "bodies": [0, 1], "anchor": [1e999, 100]})"),
+            "joints[0].anchor");
     refuses("order.json",
             joint(R"({"type": "distance", "bodies": [0, 1], "anchors": [[100, 100], [100, 150]], "min_length": 60,
                      "max_length": 40})"),
@@ -369,7 +371,8 @@ TEST_CASE("s5_9: bad joints are refused in one line with exit status 2, and noth
             "joints[0]");
     refuses("kind.json", joint(R"({"type": "rope", "bodies": [0, 1]})"), "joints[0].type");
     // The book's relaxation passes solve no joint.
-    refuses("book.json", "{" + bodies + R"(, "joints": [{"type": "revolute", "bodies": [0, 1], "anchor": [100, 100]}]})",
+    refuses("book.json",
+            "{" + bodies + R"(, "joints": [{"type": "revolute", "bodies": [0, 1], "anchor": [100, 100]}]})",
             "the book's relaxation passes solve no joint");
 }
 
