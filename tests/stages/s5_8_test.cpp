@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "boxes_as_polygons.h"
 #include "circle.h"
 #include "gjk_overlay.h"
 #include "near.h"
@@ -36,10 +37,7 @@ namespace {
 
 constexpr engine::PhysicalAttributes kStatic{.mass = 0.0};
 
-// A w x h box's corners about its middle, as a scene gives a polygon's.
-std::vector<Vec2> boxCorners(double w, double h) {
-    return {{-w / 2, -h / 2}, {w / 2, -h / 2}, {w / 2, h / 2}, {-w / 2, h / 2}};
-}
+using test::boxCorners;
 
 }  // namespace
 
@@ -126,11 +124,7 @@ PyramidRun runPyramid(engine::SolverKind solver, bool as_polygons, int steps) {
     engine::Scene scene = engine::loadScene(std::filesystem::path(BENCH_SCENES_DIR) / ".." / ".." / "ch5_demo" /
                                             "5.8_convex_polygons" / "pyramid.json");
     scene.world.solver = solver;
-    for (engine::BodyDescription& body : scene.bodies) {
-        if (!as_polygons || body.mass == 0.0) continue;
-        body.shape = engine::ShapeType::Polygon;
-        body.vertices = boxCorners(body.width, body.height);
-    }
+    if (as_polygons) test::boxesAsPolygons(scene);
     browser::Window window(scene.world.dt * 1000.0);
     engine::Core core(window, scene.world);
     engine::buildScene(core, scene.bodies);
