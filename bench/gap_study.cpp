@@ -1,5 +1,5 @@
 // Continuous collision's gap on 5.8 (ch5_demo/5.8_convex_polygons/README.md, "Continuous
-// collision's gap: GJK or the per-kind functions"), one run:
+// collision's gap: GJK where a polygon is"), one run:
 //   - queries: what one gap query costs, 5.6's per-kind functions (engine::perKindGap) against
 //     GJK (engine::gjkGap), for every pair of kinds (circle, rectangle, polygons of 3, 6
 //     and 8 corners), 2,000 random pairs each, half overlapping or close, timed over 50
@@ -19,8 +19,9 @@
 //
 //   build/gap_study
 //
-// Which gap the engine's sweep uses is continuous.cpp's to say (the README's section
-// says how the other figures were taken). Linked with stage 5.8's engine alone.
+// Which gap the engine's sweep uses is continuous.cpp's measuredByGjk: the README's
+// other columns are this program with it returning false, and true, for every pair.
+// Linked with stage 5.8's engine alone.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,11 +76,13 @@ AnyShape makeShape(browser::Random& random, int kind, Vec2 center, double size, 
         const std::vector<Vec2> corners{{-l, 0}, {-l / 2, -t}, {l / 2, -t}, {l, 0}, {l / 2, t}, {-l / 2, t}};
         return turned(engine::Polygon(center, corners));
     }
-    return turned(engine::Polygon(center, test::randomConvex(random, static_cast<std::size_t>(kind), Vec2{}, size / 2)));
+    return turned(
+        engine::Polygon(center, test::randomConvex(random, static_cast<std::size_t>(kind), Vec2{}, size / 2)));
 }
 
 engine::Outline outlineOf(const AnyShape& shape) {
-    return std::visit([](const auto& s) { return engine::outlineOf(static_cast<const engine::RigidShape&>(s)); }, shape);
+    return std::visit([](const auto& s) { return engine::outlineOf(static_cast<const engine::RigidShape&>(s)); },
+                      shape);
 }
 
 // ---- queries -------------------------------------------------------------------
@@ -96,9 +99,15 @@ double nsPerCall(std::size_t count, int passes, Each run) {
 void queryTable() {
     constexpr std::size_t kPairs = 2000;
     constexpr int kPasses = 50;
-    const std::pair<int, int> kinds[] = {{kCircle, kCircle}, {kCircle, kRectangle}, {kRectangle, kRectangle},
-                                         {kCircle, 8},       {kRectangle, 3},       {kRectangle, 6},
-                                         {kRectangle, 8},    {3, 3},                {6, 6},
+    const std::pair<int, int> kinds[] = {{kCircle, kCircle},
+                                         {kCircle, kRectangle},
+                                         {kRectangle, kRectangle},
+                                         {kCircle, 8},
+                                         {kRectangle, 3},
+                                         {kRectangle, 6},
+                                         {kRectangle, 8},
+                                         {3, 3},
+                                         {6, 6},
                                          {8, 8}};
     std::printf(
         "| pair | per-kind ns | GJK ns | GJK / per-kind | largest difference px | apart, not equal to the bit |\n"
@@ -131,7 +140,8 @@ void queryTable() {
         // Taken in turns, twice, the faster of each kept: a busy moment hits both alike.
         double per_kind = 1e300, gjk = 1e300;
         for (int round = 0; round < 2; ++round) {
-            per_kind = std::min(per_kind, nsPerCall(kPairs, kPasses, [&](std::size_t i) { sink += engine::perKindGap(a[i], b[i]); }));
+            per_kind = std::min(
+                per_kind, nsPerCall(kPairs, kPasses, [&](std::size_t i) { sink += engine::perKindGap(a[i], b[i]); }));
             gjk = std::min(gjk, nsPerCall(kPairs, kPasses, [&](std::size_t i) { sink += engine::gjkGap(a[i], b[i]); }));
         }
         std::printf("| %s - %s | %.0f | %.0f | %.2f | %.1e | %d of %d |\n", kindName(first).c_str(),
@@ -273,8 +283,9 @@ engine::WorldSettings shootingWorld(engine::SolverKind solver) {
 void tunnellingTable() {
     constexpr int kShots = 1000;
     const int kinds[] = {kCircle, kRectangle, 3, kSliver, 8};
-    std::printf("\n| shots at 20,000 px/s, a 2 px wall | book's passes: through | us a step | sequential impulse: "
-                "through | us a step |\n|---|---|---|---|---|\n");
+    std::printf(
+        "\n| shots at 20,000 px/s, a 2 px wall | book's passes: through | us a step | sequential impulse: "
+        "through | us a step |\n|---|---|---|---|---|\n");
     for (const int kind : kinds) {
         std::printf("| 1,000 %ss |", kindName(kind).c_str());
         for (const engine::SolverKind solver : {engine::SolverKind::book, engine::SolverKind::sequential_impulse}) {

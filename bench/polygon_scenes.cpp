@@ -1,5 +1,5 @@
 // 5.8's polygon scenes beside Box2D 2.4 (ch5_demo/5.8_convex_polygons/README.md, "Beside
-// Box2D"): the same bodies in both engines, the cost of a step and the bench's error
+// Box2D 2.4"): the same bodies in both engines, the cost of a step and the bench's error
 // measures (README.md here, "The figures"):
 //   - polygon_rain.json (80 polygons of 3 to 8 corners on a floor between walls), 10 s:
 //     the deepest and the mean overlap of two shapes at the end;
@@ -297,9 +297,7 @@ void study(const std::string& title, const engine::Scene& scene, const Plan& pla
 #endif
 }
 
-engine::Scene load(const char* name) {
-    return engine::loadScene(std::filesystem::path(STAGE_FOLDER) / name);
-}
+engine::Scene load(const char* name) { return engine::loadScene(std::filesystem::path(STAGE_FOLDER) / name); }
 
 }  // namespace
 
@@ -335,8 +333,8 @@ int main(int argc, char**) {
         const double mu = std::min(body.friction, slope.bodies[0].friction);
         exact.push_back(std::max(0.0, g * (std::sin(angle) - mu * std::cos(angle))) * t * t / 2);
     }
-    study("slope.json: a triangle at friction 0.5, 0.2 and 0 on a 20-degree slope, 2 s", slope, {.run_s = t, .slope = true},
-          exact);
+    study("slope.json: a triangle at friction 0.5, 0.2 and 0 on a 20-degree slope, 2 s", slope,
+          {.run_s = t, .slope = true}, exact);
     std::printf("\n(%.0f s of processor time)\n", bench::thread_cpu_seconds() - started);
     return 0;
 }
