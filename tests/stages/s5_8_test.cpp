@@ -214,13 +214,15 @@ TEST_CASE("s5_8: a fast triangle is stopped at a 2 px wall with continuous colli
 // says why: their cost, and 5.7's bits). Both agree with the brute-force distance.
 TEST_CASE("s5_8: the sweep's gap is GJK's for a pair with a polygon and the per-kind one otherwise, both exact") {
     browser::Random random(3858);
+    // The sweep's outline of any shape (polygon.h has a rectangle's ConvexPolygon by that name).
+    const auto outline = [](const engine::RigidShape& shape) { return engine::outlineOf(shape); };
     int pairs_with_polygon = 0;
     for (int k = 0; k < 600; ++k) {
         const Vec2 at{200 * random.next(), 200 * random.next()};
         const engine::Polygon polygon(at, test::randomConvex(random, 3 + k % 6, Vec2{}, 5 + 30 * random.next()));
         const engine::Rectangle box({100, 100}, 5 + 40 * random.next(), 2 + 40 * random.next());
         const engine::Circle circle({100 + 60 * random.next(), 100}, 3 + 20 * random.next());
-        const engine::Outline p = engine::outlineOf(polygon), r = engine::outlineOf(box), c = engine::outlineOf(circle);
+        const engine::Outline p = outline(polygon), r = outline(box), c = outline(circle);
         const std::vector<Vec2> p_core(p.corners.begin(), p.corners.begin() + static_cast<long>(p.count));
         std::vector<Vec2> r_core(r.corners.begin(), r.corners.begin() + 4);
         if (test::orientation(r_core[0], r_core[1], r_core[2]) < 0) std::reverse(r_core.begin(), r_core.end());
@@ -230,7 +232,7 @@ TEST_CASE("s5_8: the sweep's gap is GJK's for a pair with a polygon and the per-
         CHECK(engine::gap(p, r) == engine::gjkGap(p, r));
         CHECK_THAT(engine::gap(p, r), test::near(test::bruteForceDistance(p_ccw, r_core), 1e-9));
         // Two rectangles and a circle with either: the per-kind functions', to the bit.
-        const engine::Outline r2 = engine::outlineOf(engine::Rectangle(at, 10, 4));
+        const engine::Outline r2 = outline(engine::Rectangle(at, 10, 4));
         CHECK(engine::gap(r, r2) == engine::perKindGap(r, r2));
         CHECK(engine::gap(c, p) == engine::perKindGap(c, p));
         CHECK(engine::gap(c, r) == engine::perKindGap(c, r));
