@@ -51,7 +51,7 @@ const browser::StageDefaults kStage{
         {"f g", "a new rectangle / circle at the selected object"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "GJK for the selected shape and the one nearest it: their Minkowski difference in an inset with the origin, GJK's last simplex and the distance, and the closest points on the canvas (--overlay-all: the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
+    .overlay = "the joints: anchors, links from the centres, limits (a revolute's arc, a slider's range, a rope's lengths) and each joint's error past 1 px, ringed, the four largest in px (--overlay-all: GJK's diagram, the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
     // The page notes the book's quirk beside the echo's mass (docs/errata.md): the echo
     // keeps the book's number.
     .echo_notes = {{"Mass:", "*", "the book's quirk: 1 / (1/mass rounded to 3 digits); docs/errata.md"}},

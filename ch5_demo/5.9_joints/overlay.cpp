@@ -9,6 +9,7 @@
 #include "gjk_overlay.h"
 #include "grid_overlay.h"
 #include "islands_overlay.h"
+#include "joints_overlay.h"
 #include "overlay_draw.h"
 
 namespace engine {
@@ -190,9 +191,9 @@ void drawOverlay(browser::Window& window, const Core& core) {
     window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
-    // 5.8's own layer is GJK's diagram (gjk_overlay.h). Every layer adds the bounding
+    // 5.9's own layer is its joints (joints_overlay.h). Every layer adds the bounding
     // circles, the grid, 5.5's islands, chapter 3's and 4's layers, 5.4's contacts,
-    // 5.6's sweeps and 5.7's events.
+    // 5.6's sweeps, 5.7's events and 5.8's GJK.
     const bool all = window.overlay_all;
     if (all) {
         drawBounds(sheet, core);
@@ -206,9 +207,10 @@ void drawOverlay(browser::Window& window, const Core& core) {
         drawContacts(sheet.canvas, core, legend);
         drawSweeps(sheet, core);
         drawEvents(sheet.canvas, sheet.labels, core, legend);
+        drawGjk(sheet.canvas, sheet.labels, core, legend);
     }
-    // Last, so that its inset lies over every other layer.
-    drawGjk(sheet.canvas, sheet.labels, core, legend);
+    // Last, so that no layer covers the joints, GJK's inset included.
+    drawJoints(sheet.canvas, sheet.labels, core, legend);
 }
 
 }  // namespace engine

@@ -53,6 +53,9 @@
 // 5.8's GJK adds its diagram (gjk_overlay.h): for the selected shape and the one
 // nearest it, their Minkowski difference in an inset, the origin, GJK's last simplex
 // and the distance, and on the canvas the two closest points.
+//
+// 5.9's joints add theirs (joints_overlay.h): anchors, links, limits and each joint's
+// error in px.
 
 #include <cstddef>
 
@@ -66,7 +69,7 @@ namespace engine {
 // Document::legend_entries), the second in a run where every layer can come on, so that
 // every picture of a run has one height, whichever layers are on.
 inline constexpr std::size_t kOwnLegendEntries = 4;
-inline constexpr std::size_t kLegendEntries = 35;
+inline constexpr std::size_t kLegendEntries = 39;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

@@ -16,6 +16,9 @@
 
 #include "circle.h"
 #include "joints.h"
+#include "joints_overlay.h"
+#include "overlay.h"
+#include "overlay_draw.h"
 #include "rectangle.h"
 #include "scene_io.h"
 #include "stage_program.h"
@@ -486,6 +489,71 @@ TEST_CASE("s5_9: a spring of f hertz bounces at f; a weld holds; a slider moves 
     // Along the 45-degree axis g pulls g / sqrt(2): s = g t^2 / (2 sqrt 2) after 1 s.
     CHECK(moved.length() == Approx(kG / 2 / std::sqrt(2.0)).epsilon(0.03));
     CHECK(std::abs(car.angle()) < 1e-3);
+}
+
+// The overlay's layer of joints (joints_overlay.h) by hand: a bob 100 px under a static
+// post on a pin limited to +-0.5 rad, a cart on a slider along x limited to [-50, 80]
+// px, and a rope of at most 120 px. The bob's needle points down the link, pi/2 on the
+// canvas; its arc is pi/2 -+ 0.5 and stays put while the bob turns the needle by 0.2 rad.
+TEST_CASE("s5_9: the overlay's joints: the arc, the slider's range, the rope and the error, worked out by hand") {
+    engine::WorldSettings world = jointWorld();
+    world.movement = false;
+    test::WorldFixture page(world);
+    engine::RigidShape& post = page.core.add(engine::Circle({100, 100}, 2, kStatic));
+    engine::RigidShape& bob = page.core.add(engine::Circle({100, 200}, 10));
+    engine::JointDefinition pin = engine::pinAt(engine::JointType::revolute, post, bob, {100, 100});
+    pin.limit = engine::JointRange{-0.5, 0.5};
+    page.core.join(pin);
+    engine::RigidShape& rail = page.core.add(engine::Rectangle({300, 300}, 200, 4, kStatic));
+    engine::RigidShape& cart = page.core.add(engine::Rectangle({340, 300}, 40, 16));
+    engine::JointDefinition slider = engine::pinAt(engine::JointType::prismatic, rail, cart, {300, 300});
+    slider.local_axis = {1, 0};
+    slider.limit = engine::JointRange{-50, 80};
+    page.core.join(slider);
+    engine::RigidShape& hook = page.core.add(engine::Circle({600, 100}, 2, kStatic));
+    engine::RigidShape& load = page.core.add(engine::Circle({600, 190}, 10));
+    engine::JointDefinition rope = engine::linkBetween(hook, load, {Vec2{600, 100}, Vec2{600, 180}});
+    rope.length_range = engine::JointRange{0, 120};
+    page.core.join(rope);
+
+    std::vector<engine::JointMark> marks = engine::jointMarks(page.core);
+    REQUIRE(marks.size() == 3);
+    CHECK(marks[0].needle == Approx(kPi / 2));
+    REQUIRE(marks[0].arc);
+    CHECK(marks[0].arc->lower == Approx(kPi / 2 - 0.5));
+    CHECK(marks[0].arc->upper == Approx(kPi / 2 + 0.5));
+    CHECK(marks[0].separation == Approx(0.0).margin(1e-12));
+    CHECK(marks[1].axis.x == Approx(1.0));
+    CHECK(marks[1].axis.y == Approx(0.0).margin(1e-12));
+    CHECK(marks[1].travel_limited);
+    CHECK(marks[1].travel.lower == -50.0);
+    CHECK(marks[1].travel.upper == 80.0);
+    REQUIRE(marks[2].rope);
+    CHECK(marks[2].rope->upper == 120.0);
+    CHECK(marks[2].separation == 0.0);  // slack: 80 px of at most 120
+
+    // The bob 3 px to the right and turned by 0.2 rad about its centre (clockwise on the
+    // canvas): its anchor, 100 px above its centre, goes 3 px right with it and 100 sin
+    // 0.2 = 19.87 px further right with the turn, and 100 (1 - cos 0.2) = 1.99 px down.
+    bob.move({3, 0});
+    bob.rotate(0.2);
+    marks = engine::jointMarks(page.core);
+    const double across = 3.0 + 100.0 * std::sin(0.2), down = 100.0 * (1.0 - std::cos(0.2));
+    CHECK(marks[0].separation == Approx(std::hypot(across, down)));
+    CHECK(marks[0].needle == Approx(kPi / 2 + 0.2));
+    CHECK(marks[0].arc->lower == Approx(kPi / 2 - 0.5));
+    CHECK(marks[0].arc->upper == Approx(kPi / 2 + 0.5));
+
+    // The legend counts the kinds and the errors past 1 px, and prints the largest.
+    browser::Canvas canvas(800, 450);
+    browser::overlay::LabelLayout labels;
+    std::vector<browser::LegendEntry> legend;
+    engine::drawJoints(canvas, labels, page.core, legend);
+    REQUIRE(legend.size() == engine::kOwnLegendEntries);
+    CHECK(legend[2].text ==
+          "error > 1 px (ring): 1, largest " + browser::overlay::fixed(std::hypot(across, down), 2) + " px");
+    CHECK(legend[2].text == "error > 1 px (ring): 1, largest 22.95 px");
+    CHECK(legend[3].text == "joints 3: revolute 1, distance 1, weld 0, prismatic 1");
 }
 
 }  // namespace s5_9_test
