@@ -1,10 +1,11 @@
-// 5.9's joints beside Box2D 2.4's (issue 39): the chain and the bridge of the stage's
-// tests (tests/stages/s5_9_test.cpp), built once in px and given to both engines, Box2D
-// at 30 px to the metre. For each engine and each number of velocity iterations: the
+// 5.9's joints beside Box2D 2.4's (issue 39): the chain, the bridge and the grid of the
+// stage's tests (tests/stages/s5_9_test.cpp), built once in px and given to both
+// engines, Box2D at 30 px to the metre. For each engine and each number of velocity
+// iterations (and for the stage, with 4 sub-steps a step, its world's substeps): the
 // cost of a step (ms, the median of the run's steps) against what the joints let go:
 // the largest gap at any pin over the run, and the most the chain grew (the gaps
 // summed), px. A point further down and to the left is better on both.
-//   build/joints_bench              the table (a few seconds)
+//   build/joints_bench              the tables (15 s of one core)
 //   BOX_MASS=30 build/joints_bench  the bridge's box of another mass (planks are 1)
 //   NO_BOX=1 build/joints_bench     the bridge with nothing on it
 #include <algorithm>
@@ -105,6 +106,38 @@ JointScene bridge() {
     return scene;
 }
 
+// 30 x 30 discs of radius 4 px, 12 px apart, each pinned halfway to its right and lower
+// neighbours (1,740 pins), the top left disc static: it falls from level and swings.
+JointScene grid() {
+    JointScene scene{.name = "grid: 30 x 30 discs, 1,740 pins, one corner fixed",
+                     .pieces = {},
+                     .pins = {},
+                     .dropped = {},
+                     .drop_at = 0};
+    constexpr int kSide = 30;
+    constexpr double kSpacing = 12.0;
+    const Vec2 corner{200, 40};
+    for (int row = 0; row < kSide; ++row) {
+        for (int column = 0; column < kSide; ++column) {
+            scene.pieces.push_back({.disc = true,
+                                    .center = corner + Vec2{column * kSpacing, row * kSpacing},
+                                    .radius = 4,
+                                    .mass = row == 0 && column == 0 ? 0.0 : 1.0});
+        }
+    }
+    const auto at = [](int row, int column) { return static_cast<std::size_t>(row * kSide + column); };
+    for (int row = 0; row < kSide; ++row) {
+        for (int column = 0; column < kSide; ++column) {
+            const Vec2 here = corner + Vec2{column * kSpacing, row * kSpacing};
+            if (column + 1 < kSide)
+                scene.pins.push_back({at(row, column), at(row, column + 1), here + Vec2{kSpacing / 2, 0}});
+            if (row + 1 < kSide)
+                scene.pins.push_back({at(row, column), at(row + 1, column), here + Vec2{0, kSpacing / 2}});
+        }
+    }
+    return scene;
+}
+
 struct Result {
     double ms_per_step = 0.0;
     double largest_gap = 0.0;  // px
@@ -122,8 +155,9 @@ double msSince(Clock::time_point start) {
 }
 
 // The stage's engine.
-Result runStage(const JointScene& scene, int iterations) {
+Result runStage(const JointScene& scene, int iterations, int substeps = 1) {
     engine::WorldSettings world = engine::kBookWorld;
+    world.substeps = substeps;
     world.solver = engine::SolverKind::sequential_impulse;
     world.gravity = {0, kGravity};
     world.velocity_iterations = iterations;
@@ -240,11 +274,12 @@ int main(int argc, char**) {
         std::fprintf(stderr, "joints_bench: takes no arguments\n");
         return 2;
     }
-    for (const JointScene& scene : {chain(), bridge()}) {
+    for (const JointScene& scene : {chain(), bridge(), grid()}) {
         std::printf("\n%s, 10 s at 60 Hz\n\n", scene.name);
         std::printf("| engine             | iterations | ms/step  | largest gap, px | most added, px  |\n");
         std::printf("| ---                | ---        | ---      | ---             | ---             |\n");
         for (const int iterations : {4, 8, 16, 32}) print("5.9", iterations, runStage(scene, iterations));
+        for (const int iterations : {4, 8}) print("5.9, 4 sub-steps", iterations, runStage(scene, iterations, 4));
 #if BENCH_HAS_BOX2D
         for (const int iterations : {4, 8, 16, 32}) print("Box2D 2.4", iterations, runBox2d(scene, iterations));
 #else
