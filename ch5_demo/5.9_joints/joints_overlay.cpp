@@ -14,7 +14,7 @@ using browser::Color;
 namespace draw = browser::overlay;
 
 // Colours none of the page (blue, red, green, orange, gray) nor the other layers use.
-constexpr Color kLinkColor{0, 110, 160, 255};   // cerulean: anchors, links, rods
+constexpr Color kLinkColor{0, 110, 160, 255};    // cerulean: anchors, links, rods
 constexpr Color kLimitColor{200, 60, 170, 255};  // orchid: limits
 constexpr Color kErrorColor{150, 0, 0, 255};     // maroon: a joint's error
 
@@ -24,7 +24,7 @@ constexpr Color kErrorColor{150, 0, 0, 255};     // maroon: a joint's error
 constexpr double kLongestArc = 20.0;  // px
 constexpr double kShortestArc = 8.0;  // px
 constexpr double kArcShare = 0.8;     // of the link
-constexpr double kTickReach = 4.0;   // px each way
+constexpr double kTickReach = 4.0;    // px each way
 // A slider with no limit: its axis drawn this far past its anchors either way.
 constexpr double kFreeAxisMargin = 30.0;  // px
 // A link shorter than this is no line to draw: the anchor is the centre (a wheel's pin).
@@ -124,8 +124,10 @@ JointMark markOf(const JointDefinition& joint, const RigidShape& a, const RigidS
 
 void drawMark(browser::Canvas& canvas, const JointMark& mark) {
     // The links: each centre to its anchor.
-    if (mark.center_a.distance(mark.anchor_a) >= kShortestLine) draw::line(canvas, mark.center_a, mark.anchor_a, kLinkColor);
-    if (mark.center_b.distance(mark.anchor_b) >= kShortestLine) draw::line(canvas, mark.center_b, mark.anchor_b, kLinkColor);
+    if (mark.center_a.distance(mark.anchor_a) >= kShortestLine)
+        draw::line(canvas, mark.center_a, mark.anchor_a, kLinkColor);
+    if (mark.center_b.distance(mark.anchor_b) >= kShortestLine)
+        draw::line(canvas, mark.center_b, mark.anchor_b, kLinkColor);
     draw::marker(canvas, mark.anchor_a, kLinkColor);
     if (mark.anchor_a.distance(mark.anchor_b) >= kShortestLine) draw::marker(canvas, mark.anchor_b, kLinkColor);
     const Vec2 gap = mark.anchor_b - mark.anchor_a;
@@ -138,8 +140,7 @@ void drawMark(browser::Canvas& canvas, const JointMark& mark) {
     }
     // The limits.
     if (mark.arc) {
-        const double radius =
-            std::clamp(kArcShare * mark.center_b.distance(mark.anchor_b), kShortestArc, kLongestArc);
+        const double radius = std::clamp(kArcShare * mark.center_b.distance(mark.anchor_b), kShortestArc, kLongestArc);
         arc(canvas, mark.anchor_b, radius, *mark.arc, kLimitColor);
         for (const double end : {mark.arc->lower, mark.arc->upper}) {
             const Vec2 out = heading(end);
@@ -211,12 +212,12 @@ void drawJoints(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
     legend.push_back({kLimitColor, "limit: angle arc, slider's range, rope"});
     legend.push_back({kErrorColor, "error > " + draw::fixed(kShownError, 0) + " px (ring): " + std::to_string(past) +
                                        ", largest " + draw::fixed(largest, 2) + " px"});
-    legend.push_back({kLinkColor, "joints " + std::to_string(marks.size()) + ": revolute " +
-                                      std::to_string(kinds[static_cast<std::size_t>(JointType::revolute)]) +
-                                      ", distance " + std::to_string(kinds[static_cast<std::size_t>(JointType::distance)]) +
-                                      ", weld " + std::to_string(kinds[static_cast<std::size_t>(JointType::weld)]) +
-                                      ", prismatic " +
-                                      std::to_string(kinds[static_cast<std::size_t>(JointType::prismatic)])});
+    legend.push_back(
+        {kLinkColor, "joints " + std::to_string(marks.size()) + ": revolute " +
+                         std::to_string(kinds[static_cast<std::size_t>(JointType::revolute)]) + ", distance " +
+                         std::to_string(kinds[static_cast<std::size_t>(JointType::distance)]) + ", weld " +
+                         std::to_string(kinds[static_cast<std::size_t>(JointType::weld)]) + ", prismatic " +
+                         std::to_string(kinds[static_cast<std::size_t>(JointType::prismatic)])});
 }
 
 }  // namespace engine

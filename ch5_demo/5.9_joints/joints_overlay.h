@@ -42,8 +42,8 @@ struct JointMark {
     bool spring = false;      // a distance joint with its own hertz
     // A revolute with a limit: the needle (from the pin, along the second body's link,
     // or its own direction when its centre is the pin) and the range it may sweep.
-    double needle = 0.0;                 // rad
-    std::optional<JointRange> arc;       // rad
+    double needle = 0.0;            // rad
+    std::optional<JointRange> arc;  // rad
     // A prismatic: its axis (a unit vector) and where along it, from anchor_a, the range
     // ends (px), or, with no limit, as far as anchor_b and a little more either way.
     Vec2 axis;
