@@ -17,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "boxes_as_polygons.h"
 #include "circle.h"
+#include "continuous.h"
 #include "gjk_overlay.h"
 #include "near.h"
 #include "narrow_phase.h"
@@ -25,6 +27,7 @@
 #include "polygon.h"
 #include "polygon_mass.h"
 #include "random.h"
+#include "random_convex.h"
 #include "rectangle.h"
 #include "scene_io.h"
 #include "stage_program.h"
@@ -38,10 +41,7 @@ namespace {
 
 constexpr engine::PhysicalAttributes kStatic{.mass = 0.0};
 
-// A w x h box's corners about its middle, as a scene gives a polygon's.
-std::vector<Vec2> boxCorners(double w, double h) {
-    return {{-w / 2, -h / 2}, {w / 2, -h / 2}, {w / 2, h / 2}, {-w / 2, h / 2}};
-}
+using test::boxCorners;
 
 }  // namespace
 
@@ -128,11 +128,7 @@ PyramidRun runPyramid(engine::SolverKind solver, bool as_polygons, int steps) {
     engine::Scene scene = engine::loadScene(std::filesystem::path(BENCH_SCENES_DIR) / ".." / ".." / "ch5_demo" /
                                             "5.8_convex_polygons" / "pyramid.json");
     scene.world.solver = solver;
-    for (engine::BodyDescription& body : scene.bodies) {
-        if (!as_polygons || body.mass == 0.0) continue;
-        body.shape = engine::ShapeType::Polygon;
-        body.vertices = boxCorners(body.width, body.height);
-    }
+    if (as_polygons) test::boxesAsPolygons(scene);
     browser::Window window(scene.world.dt * 1000.0);
     engine::Core core(window, scene.world);
     engine::buildScene(core, scene.bodies);
@@ -213,6 +209,40 @@ TEST_CASE("s5_8: a fast triangle is stopped at a 2 px wall with continuous colli
             CHECK(shot.center().x > 400);
         }
     }
+}
+
+// Continuous collision's gap (continuous.h): GJK for two outlines with corners of which
+// one is a polygon's, 5.6's per-kind functions for a circle or two rectangles (README.md
+// says why: their cost, and 5.7's bits). Both agree with the brute-force distance.
+TEST_CASE("s5_8: the sweep's gap is GJK's for a pair with a polygon and the per-kind one otherwise, both exact") {
+    browser::Random random(3858);
+    // The sweep's outline of any shape (polygon.h has a rectangle's ConvexPolygon by that name).
+    const auto outline = [](const engine::RigidShape& shape) { return engine::outlineOf(shape); };
+    int pairs_with_polygon = 0;
+    for (int k = 0; k < 600; ++k) {
+        const Vec2 at{200 * random.next(), 200 * random.next()};
+        const engine::Polygon polygon(at, test::randomConvex(random, 3 + k % 6, Vec2{}, 5 + 30 * random.next()));
+        const engine::Rectangle box({100, 100}, 5 + 40 * random.next(), 2 + 40 * random.next());
+        const engine::Circle circle({100 + 60 * random.next(), 100}, 3 + 20 * random.next());
+        const engine::Outline p = outline(polygon), r = outline(box), c = outline(circle);
+        const std::vector<Vec2> p_core(p.corners.begin(), p.corners.begin() + static_cast<long>(p.count));
+        std::vector<Vec2> r_core(r.corners.begin(), r.corners.begin() + 4);
+        if (test::orientation(r_core[0], r_core[1], r_core[2]) < 0) std::reverse(r_core.begin(), r_core.end());
+        std::vector<Vec2> p_ccw = p_core;
+        if (test::orientation(p_ccw[0], p_ccw[1], p_ccw[2]) < 0) std::reverse(p_ccw.begin(), p_ccw.end());
+        // A polygon and a rectangle: GJK's answer, to the bit, and the distance's to 1e-9 px.
+        CHECK(engine::gap(p, r) == engine::gjkGap(p, r));
+        CHECK_THAT(engine::gap(p, r), test::near(test::bruteForceDistance(p_ccw, r_core), 1e-9));
+        // Two rectangles and a circle with either: the per-kind functions', to the bit.
+        const engine::Outline r2 = outline(engine::Rectangle(at, 10, 4));
+        CHECK(engine::gap(r, r2) == engine::perKindGap(r, r2));
+        CHECK(engine::gap(c, p) == engine::perKindGap(c, p));
+        CHECK(engine::gap(c, r) == engine::perKindGap(c, r));
+        CHECK_THAT(std::max(engine::gap(c, p), 0.0),
+                   test::near(std::max(test::pointShapeDistance(circle.center(), p_ccw) - circle.radius(), 0.0), 1e-9));
+        pairs_with_polygon += engine::gap(p, r) > 0.0 ? 1 : 0;
+    }
+    CHECK(pairs_with_polygon > 200);  // most are apart: the distances are measured, not only 0
 }
 
 TEST_CASE("s5_8: corners that make no convex polygon are refused in one line, and nothing is written") {
