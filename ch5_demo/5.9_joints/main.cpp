@@ -49,9 +49,10 @@ const browser::StageDefaults kStage{
         {"p", "continuous collision on / off"},
         {"h", "excite: a random velocity for every moving shape"},
         {"f g", "a new rectangle / circle at the selected object"},
+        {"slash", "a new random convex polygon, 3 to 8 corners, at the selected object (also /)"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "the joints: anchors, links from the centres, limits (a revolute's arc, a slider's range, a rope's lengths) and each joint's error past 1 px, ringed, the four largest in px (--overlay-all: GJK's diagram, the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
+    .overlay = "the joints: anchors, links from the centres, limits (a revolute's arc, a slider's range, a rope's lengths) and each joint's error past 1 px, ringed, the four largest in px (--overlay-all: GJK's panels, the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
     // The page notes the book's quirk beside the echo's mass (docs/errata.md): the echo
     // keeps the book's number.
     .echo_notes = {{"Mass:", "*", "the book's quirk: 1 / (1/mass rounded to 3 digits); docs/errata.md"}},

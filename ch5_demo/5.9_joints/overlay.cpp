@@ -209,7 +209,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
         drawEvents(sheet.canvas, sheet.labels, core, legend);
         drawGjk(sheet.canvas, sheet.labels, core, legend);
     }
-    // Last, so that no layer covers the joints, GJK's inset included.
+    // Last, so that no layer covers the joints, GJK's panels included.
     drawJoints(sheet.canvas, sheet.labels, core, legend);
 }
 
