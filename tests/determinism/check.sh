@@ -82,6 +82,9 @@ PYTHON
 
 for scene in ch5_demo/scenes/*.json "$folder"/*.json; do
   for solver in book sequential_impulse; do
+    # 5.9's joints are refused on the book's passes (its README says why): a scene with
+    # joints runs on the sequential impulses only.
+    if [[ $solver == book ]] && grep -q '"joints"' "$scene"; then continue; fi
     variant "$scene" "$solver" "$scratch/scene.json"
     compare "$(basename "$scene") ($solver)" --scene "$scratch/scene.json" --frames "$frames"
   done
