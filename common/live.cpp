@@ -343,9 +343,11 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
     }
     const int drags = session.drags();
     std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
-              << (drags == 0 ? "" : drags == 1 ? " and 1 drag" : " and " + std::to_string(drags) + " drags") << " in "
-              << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to " << record.string()
-              << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
+              << (drags == 0   ? ""
+                  : drags == 1 ? " and 1 drag"
+                               : " and " + std::to_string(drags) + " drags")
+              << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
+              << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
               << "  " << replay_command(options.live, frames, session.recorded().firstFrame()) << '\n';
     return session.screenshotFailed() ? 1 : 0;
 }

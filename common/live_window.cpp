@@ -99,8 +99,9 @@ std::map<int, std::vector<ScriptedEvent>> read_events(const std::filesystem::pat
         const SDL_Keycode key = name == "close" || mouse ? 0 : SDL_GetKeyFromName(name.c_str());
         if (at == std::string::npos || error != std::errc{} || stop != last || refresh < 1 ||
             (name != "close" && !mouse && key == SDLK_UNKNOWN)) {
-            throw LiveWindowError("--live-events: bad token \"" + token +
-                                  "\" (NAME@REFRESH, NAME an SDL key name, close, or press:X,Y, move:X,Y, release:X,Y)");
+            throw LiveWindowError(
+                "--live-events: bad token \"" + token +
+                "\" (NAME@REFRESH, NAME an SDL key name, close, or press:X,Y, move:X,Y, release:X,Y)");
         }
         events[refresh].push_back(mouse ? *mouse : ScriptedEvent{key});
     }
@@ -190,8 +191,8 @@ public:
                 if (const auto input = input_of(event.key)) inputs.push_back(*input);
             } else if ((event.type == SDL_MOUSEBUTTONDOWN || event.type == SDL_MOUSEBUTTONUP) &&
                        event.button.button == SDL_BUTTON_LEFT) {
-                const auto kind = event.type == SDL_MOUSEBUTTONDOWN ? LiveInput::Kind::PointerPress
-                                                                    : LiveInput::Kind::PointerRelease;
+                const auto kind =
+                    event.type == SDL_MOUSEBUTTONDOWN ? LiveInput::Kind::PointerPress : LiveInput::Kind::PointerRelease;
                 inputs.push_back({.kind = kind, .x = event.button.x, .y = event.button.y});
             } else if (event.type == SDL_MOUSEMOTION) {
                 inputs.push_back({.kind = LiveInput::Kind::PointerMove, .x = event.motion.x, .y = event.motion.y});

@@ -51,7 +51,7 @@ void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
     // The spring the constraint stands for (mouse_joint.h): stiffness and damping in
     // proportion to the mass, so every shape follows at the same frequency.
     const double omega = 2.0 * std::numbers::pi * kHertz;
-    const double stiffness = mass * omega * omega;               // k, (px/s^2) per px, times the mass
+    const double stiffness = mass * omega * omega;              // k, (px/s^2) per px, times the mass
     const double damping = 2.0 * mass * kDampingRatio * omega;  // c
     const double gamma = 1.0 / (h * (damping + h * stiffness));
     const double beta = h * stiffness / (damping + h * stiffness);

@@ -66,9 +66,9 @@ public:
     void draw(browser::Canvas& context, ShapeList shapes) const;
 
 private:
-    BodyId body_ = 0;     // 0: nothing held
-    Vec2 local_anchor_;   // the grabbed point in the shape's frame: px from its centre, unturned
-    Vec2 target_;         // where the pointer is, px
+    BodyId body_ = 0;    // 0: nothing held
+    Vec2 local_anchor_;  // the grabbed point in the shape's frame: px from its centre, unturned
+    Vec2 target_;        // where the pointer is, px
 };
 
 }  // namespace engine

@@ -202,9 +202,9 @@ TEST_CASE("s5_9: two kinematic bodies pass through each other and through static
 TEST_CASE("s5_9: a kinematic body that is also static or a bullet is refused in one line", "[kinematic]") {
     const auto refusal = [](const std::string& keys) -> std::string {
         try {
-            engine::readScene(R"({"bodies": [{"shape": "circle", "center": [1, 1], "radius": 5, "kinematic": true, )" +
-                                  keys + "}]}",
-                              "k.json");
+            engine::readScene(
+                R"({"bodies": [{"shape": "circle", "center": [1, 1], "radius": 5, "kinematic": true, )" + keys + "}]}",
+                "k.json");
         } catch (const browser::SceneError& error) {
             return error.what();
         }

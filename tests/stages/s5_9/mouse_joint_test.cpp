@@ -140,11 +140,9 @@ TEST_CASE("s5_9: a scripted drag replays to the same dump, byte for byte", "[mou
                                   .string();
     const std::string drag = "drag:305,405*5/320,380/340,350/360,320/380,300/400,280*40@10";
     const auto run = [&](const std::string& name) {
-        const test::ProgramRun result =
-            test::runStageProgram(folder, "--scene " + test::quoted(scene) + " --keys '" + drag +
-                                              "' --frames 70 --every 0 --no-gif --dump " +
-                                              test::quoted(folder.path / (name + ".csv")) + " --out " +
-                                              test::quoted(folder.path / name));
+        const test::ProgramRun result = test::runStageProgram(
+            folder, "--scene " + test::quoted(scene) + " --keys '" + drag + "' --frames 70 --every 0 --no-gif --dump " +
+                        test::quoted(folder.path / (name + ".csv")) + " --out " + test::quoted(folder.path / name));
         REQUIRE(result.status == 0);
         return test::readText(folder.path / (name + ".csv"));
     };
