@@ -199,6 +199,36 @@ TEST_CASE("s5_9: two kinematic bodies pass through each other and through static
     }
 }
 
+TEST_CASE("s5_9: a kinematic body begins and ends contacts as any body does (5.7's events)", "[kinematic]") {
+    // In no gravity a kinematic paddle at 100 px/s meets a free box 60 px ahead: a begin
+    // (and a hit: 100 px/s is past the hit speed); the box, bounced off at (1 + e) 100 =
+    // 120 px/s, leaves it, and the pair ends.
+    const std::string bodies =
+        R"({"shape": "rectangle", "center": [100, 200], "width": 20, "height": 80, "kinematic": true, "velocity": [100, 0]},
+           {"shape": "rectangle", "center": [180, 200], "width": 40, "height": 40})";
+    for (const SolverKind solver : kBothSolvers) {
+        INFO("solver " << solverName(solver));
+        SceneWorld world(R"(, "gravity": [0, 0])", bodies, solver);
+        world.page.core.keepEvents(true);
+        int begins = 0, ends = 0, hits = 0;
+        for (int step = 0; step < 2 * kStepsPerSecond; ++step) {
+            world.page.steps(1);
+            for (const engine::ContactEvent& event : world.page.core.events().events()) {
+                CHECK(event.id_a == world.body(0).id());
+                CHECK(event.id_b == world.body(1).id());
+                begins += event.kind == engine::EventKind::begin ? 1 : 0;
+                ends += event.kind == engine::EventKind::end ? 1 : 0;
+                hits += event.kind == engine::EventKind::hit ? 1 : 0;
+            }
+        }
+        CHECK(begins == 1);
+        CHECK(hits == 1);
+        CHECK(ends == 1);
+        CHECK(world.body(1).velocity().x > 100.0);  // ahead of the paddle, and pulling away
+        CHECK(world.body(0).velocity() == Vec2{100, 0});
+    }
+}
+
 TEST_CASE("s5_9: a kinematic body that is also static or a bullet is refused in one line", "[kinematic]") {
     const auto refusal = [](const std::string& keys) -> std::string {
         try {
