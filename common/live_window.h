@@ -5,7 +5,7 @@
 //
 // The left mouse button pressed, the pointer moved and the button let go go to the
 // session as pointer inputs at window px, which are the picture's (live.h).
-// Keys: a-z, 0-9 (and the keypad's), comma, Up and Down go to the page, held keys
+// Keys: a-z, 0-9 (and the keypad's), comma, Up, Down and slash go to the page, held keys
 // repeating as a browser repeats them; Space pauses, period steps, F12 saves the page
 // shown as a PNG, Escape ends, and so does the window's close button (live.h says what
 // each does to the frames).
