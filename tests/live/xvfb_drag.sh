@@ -14,34 +14,7 @@
 set -euo pipefail
 program=$1 compare_png=$2 has_window=$3 scene=$4
 
-if [[ "$has_window" != yes ]]; then
-  echo "SKIPPED: this build has no live window (SDL2)"
-  exit 77
-fi
-for tool in Xvfb xdotool; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "SKIPPED: $tool is not installed (tools/setup installs xvfb and xdotool)"
-    exit 77
-  fi
-done
-
-work=$(mktemp -d)
-xvfb_pid='' live_pid=''
-cleanup() {
-  if [[ -n "$live_pid" ]]; then kill "$live_pid" 2>/dev/null || true; fi
-  if [[ -n "$xvfb_pid" ]]; then kill "$xvfb_pid" 2>/dev/null || true; fi
-  rm -rf "$work"
-}
-trap cleanup EXIT
-fail() { echo "FAILED: $*"; for f in "$work"/*.txt; do [[ -f "$f" ]] && { echo "--- $(basename "$f")"; cat "$f"; }; done; exit 1; }
-
-Xvfb -displayfd 3 -screen 0 1400x700x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.txt" &
-xvfb_pid=$!
-for _ in $(seq 100); do [[ -s "$work/display" ]] && break; sleep 0.1; done
-[[ -s "$work/display" ]] || fail "Xvfb did not start"
-export DISPLAY=":$(cat "$work/display")"
-
-cd "$work"
+source "$(dirname "$0")/xvfb_display.sh"
 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" SDL_VIDEODRIVER=x11 \
   "$program" --scene "$scene" --live --record session.keys --dump live.csv >live_out.txt 2>live_err.txt &
 live_pid=$!
