@@ -76,37 +76,26 @@ void ContactEvents::startStep(long step) {
 // The step's first report of a pair is the one kept: the book's passes find a pair
 // again in each of them, and the first, from before anything resolved it, has the
 // speed the pair met at.
-void ContactEvents::report(const RigidShape& a, const RigidShape& b, const Sighting& seen) {
+void ContactEvents::report(const RigidShape& a, const RigidShape& b, Vec2 point, Vec2 normal, bool sensor) {
     const PairIds pair{a.id(), b.id()};
-    if (!(last_report_ < pair)) closeRun();
+    // The run's last report is the later of the last one taken here and the last pair
+    // the walk has left behind (touching(), below, only moves the walk).
+    if (!(last_report_ < pair) || (marks_walked_ > 0 && !(marks_[marks_walked_ - 1].pair < pair))) closeRun();
     last_report_ = pair;
-    if (walkMarksTo(pair)) {
+    while (marks_walked_ < marks_.size() && marks_[marks_walked_].pair < pair) ++marks_walked_;
+    if (marks_walked_ < marks_.size() && marks_[marks_walked_].pair == pair) {
         // Touching already: no begin, so no approach speed either; only where it touches now.
-        Mark& mark = marks_[marks_walked_];
-        if (mark.found) return;
-        mark.found = true;
-        found_[marks_walked_] = seen;
+        const std::size_t k = marks_walked_++;
+        if (marks_[k].found) return;
+        marks_[k].found = true;
+        found_[k] = {point, normal, sensor};
         return;
     }
     while (begun_walked_ < begun_.size() && begun_[begun_walked_].pair < pair) ++begun_walked_;
     if (begun_walked_ < begun_.size() && begun_[begun_walked_].pair == pair) return;
     // New: a begin, and a hit if the surfaces met fast.
-    const double approach = -(surfaceVelocity(b, seen.point) - surfaceVelocity(a, seen.point)).dot(seen.normal);
-    run_.push_back({pair, seen, approach});
-}
-
-inline bool ContactEvents::walkMarksTo(PairIds pair) {
-    while (marks_walked_ < marks_.size() && marks_[marks_walked_].pair < pair) ++marks_walked_;
-    return marks_walked_ < marks_.size() && marks_[marks_walked_].pair == pair;
-}
-
-// The book's passes report a rain of 1000's pairs some 10,000 times a step, nearly all
-// of them pairs touching already that an earlier pass of the step has found: this is
-// the events' hot path, and it costs a few comparisons, and no call.
-inline bool ContactEvents::foundAgain(PairIds pair) {
-    if (!(last_report_ < pair) || !walkMarksTo(pair) || !marks_[marks_walked_].found) return false;
-    last_report_ = pair;
-    return true;
+    const double approach = -(surfaceVelocity(b, point) - surfaceVelocity(a, point)).dot(normal);
+    run_.push_back({pair, {point, normal, sensor}, approach});
 }
 
 // A run's new pairs, in ascending order as they came, join the step's others, which the
@@ -124,16 +113,34 @@ void ContactEvents::closeRun() {
     begun_walked_ = 0;
 }
 
+// The hot path: the book's passes report a rain of 1000's pairs some 10,000 times a
+// step, nearly all of them pairs touching already, so their common case costs a few
+// comparisons and no call. A pass that finds the pairs the pass before found finds
+// each one the walk's next, or the one after it when the pair between was not found
+// this time (its shapes rest, or came apart); and since the walk stands just after the
+// run's last report, either comes after it: the run goes on. Anything else is
+// report()'s. Where the pair touches is worked out only for the step's first report
+// of it.
 void ContactEvents::touching(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
+    if (!kept()) return;
     // The shapes come in list order, which is id order: the normal already points from
     // the smaller id to the larger.
-    if (kept() && !foundAgain({a.id(), b.id()}))
-        report(a, b, {(info.start() + info.end()) * 0.5, info.normal(), false});
+    const PairIds pair{a.id(), b.id()};
+    std::size_t k = marks_walked_;
+    if (k < marks_.size() && marks_[k].pair != pair) ++k;
+    if (k >= marks_.size() || marks_[k].pair != pair) {
+        report(a, b, (info.start() + info.end()) * 0.5, info.normal(), false);
+        return;
+    }
+    marks_walked_ = k + 1;
+    if (marks_[k].found) return;
+    marks_[k].found = true;
+    found_[k] = {(info.start() + info.end()) * 0.5, info.normal(), false};
 }
 
 void ContactEvents::sensed(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
     if (a.isSensor() && b.isSensor()) return;
-    if (kept()) report(a, b, {(info.start() + info.end()) * 0.5, info.normal(), true});
+    if (kept()) report(a, b, (info.start() + info.end()) * 0.5, info.normal(), true);
 }
 
 void ContactEvents::crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction) {
@@ -142,7 +149,7 @@ void ContactEvents::crossed(const RigidShape& mover, const RigidShape& sensor, V
     // the mover is the first of the pair, against it otherwise.
     const bool mover_first = mover.id() < sensor.id();
     const Vec2 normal = mover_first ? direction : direction * -1.0;
-    report(mover_first ? mover : sensor, mover_first ? sensor : mover, {point, normal, true});
+    report(mover_first ? mover : sensor, mover_first ? sensor : mover, point, normal, true);
 }
 
 ContactEvent ContactEvents::eventOf(EventKind kind, PairIds pair, const Sighting& seen, double speed) const {

@@ -119,9 +119,9 @@ private:
     };
     // The list of pairs touching, sorted by ids, is kept in three arrays side by side,
     // entry k of each for the same pair, each read by its own part of the step.
-    // What every report looks up (report(), below): the pair, and whether a report of
-    // this step has found it. A small entry: the book's passes walk these thousands of
-    // times a step.
+    // What every report looks up (touching() and report(), in the .cpp): the pair, and
+    // whether a report of this step has found it. A small entry: the book's passes walk
+    // these thousands of times a step.
     struct Mark {
         PairIds pair;
         bool found = false;
@@ -145,12 +145,7 @@ private:
     };
     ContactEvent eventOf(EventKind kind, PairIds pair, const Sighting& seen, double speed = 0.0) const;
     // A pair found touching: written down if this is the step's first report of it.
-    void report(const RigidShape& a, const RigidShape& b, const Sighting& seen);
-    // Whether the pair touches already and a report of this step has found it: then
-    // there is nothing to write down (the hot path, in the .cpp).
-    bool foundAgain(PairIds pair);
-    // Walks the pairs touching up to `pair`: whether it is one of them.
-    bool walkMarksTo(PairIds pair);
+    void report(const RigidShape& a, const RigidShape& b, Vec2 point, Vec2 normal, bool sensor);
     void closeRun();
 
     unsigned readers_ = 0;  // EventReader bits
@@ -169,8 +164,9 @@ private:
     // from the current one.
     std::vector<Begin> begun_;
     std::vector<Begin> run_;
-    // Where the current run of reports stands: the last pair it reported, and how far it
-    // has walked marks_ and begun_.
+    // Where the current run of reports stands: the last pair report() took, and how far
+    // the run has walked marks_ (to the first pair after its last report: a pass that
+    // finds the pairs the pass before found finds each one next in line) and begun_.
     PairIds last_report_;
     std::size_t marks_walked_ = 0;
     std::size_t begun_walked_ = 0;
