@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "boxes_as_polygons.h"
 #include "browser.h"
 #include "core.h"
 
@@ -151,12 +152,7 @@ constexpr int kPyramidRuns = 3;
 double pyramidStepUs(engine::SolverKind solver, bool as_polygons) {
     engine::Scene scene = engine::loadScene(std::filesystem::path(STAGE_FOLDER) / "pyramid.json");
     scene.world.solver = solver;
-    for (engine::BodyDescription& body : scene.bodies) {
-        if (!as_polygons || body.mass == 0.0) continue;
-        const double w = body.width / 2, h = body.height / 2;
-        body.shape = engine::ShapeType::Polygon;
-        body.vertices = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
-    }
+    if (as_polygons) test::boxesAsPolygons(scene);
     browser::Window window(scene.world.dt * 1000.0);
     engine::Core core(window, scene.world);
     engine::buildScene(core, scene.bodies);

@@ -114,7 +114,7 @@ std::string help_footer(const StageDefaults& defaults) {
     std::string footer =
         "A key script is tokens KEY[*COUNT][@FRAME] separated by spaces, e.g. \"f*3 g@10 up\";\n"
         "a token without @ comes at the frame of the one before.";
-    if (defaults.key_help.empty()) return footer + "\nKeys: a-z, 0-9, comma, up, down.";
+    if (defaults.key_help.empty()) return footer + "\nKeys: a-z, 0-9, comma, up, down, slash.";
     const std::vector<KeyHelp> keys = with_overlay_key(defaults);
     std::size_t widest = 0;
     for (const KeyHelp& line : keys) widest = std::max(widest, line.keys.size());

@@ -10,7 +10,7 @@ namespace {
 
 constexpr int kLetterCount = 26;
 constexpr int kDigitCount = 10;
-constexpr const char* kValidKeys = "keys: a-z, 0-9, comma, up, down";
+constexpr const char* kValidKeys = "keys: a-z, 0-9, comma, up, down, slash";
 
 // The whole of `text` as a number in [low, high], or nothing: no sign, no spaces, no
 // trailing characters, so "3x", "+3" and "" are all rejected.
@@ -40,6 +40,7 @@ std::string key_name(Key key) {
         case Key::Comma: return "comma";
         case Key::Up: return "up";
         case Key::Down: return "down";
+        case Key::Slash: return "slash";
         default: return "?";  // unreachable: every letter and digit returned above
     }
 }
@@ -54,11 +55,13 @@ std::optional<Key> parse_key(std::string_view name) {
         if (c >= 'a' && c <= 'z') return static_cast<Key>(static_cast<int>(Key::A) + (c - 'a'));
         if (c >= '0' && c <= '9') return static_cast<Key>(static_cast<int>(Key::Digit0) + (c - '0'));
         if (c == ',') return Key::Comma;
+        if (c == '/') return Key::Slash;
         return std::nullopt;
     }
     if (lower == "comma") return Key::Comma;
     if (lower == "up") return Key::Up;
     if (lower == "down") return Key::Down;
+    if (lower == "slash") return Key::Slash;
     return std::nullopt;
 }
 

@@ -3,7 +3,8 @@
 // programs replay a script of key presses instead, so every run is repeatable.
 //
 // Script grammar: tokens separated by spaces, each  KEY[*COUNT][@FRAME]
-//   KEY    a letter, a digit, `comma` (or `,`), `up` or `down`; case-insensitive
+//   KEY    a letter, a digit, `comma` (or `,`), `up`, `down` or `slash` (or `/`);
+//          case-insensitive
 //   COUNT  press it COUNT times (>= 1)
 //   FRAME  press it before frame FRAME (0-based); a token without @ happens at the
 //          frame of the token before it (frame 0 at the start)
@@ -21,17 +22,19 @@
 namespace browser {
 
 // The keys in rows, letters, digits, the rest (the layout would put one on a line).
+// Slash came last, for a page that had given every letter a job and needed one more:
+// a key of its own, whatever that page makes of it (its --help says).
 // clang-format off
 enum class Key {
     A, B, C, D, E, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, V, W, X, Y, Z,
     Digit0, Digit1, Digit2, Digit3, Digit4, Digit5, Digit6, Digit7, Digit8, Digit9,
-    Comma, Up, Down,
+    Comma, Up, Down, Slash,
 };
 // clang-format on
 
-inline constexpr int kKeyCount = static_cast<int>(Key::Down) + 1;
+inline constexpr int kKeyCount = static_cast<int>(Key::Slash) + 1;
 
-// The key's name as a script writes it ("f", "7", "comma", "up").
+// The key's name as a script writes it ("f", "7", "comma", "up", "slash").
 std::string key_name(Key key);
 std::optional<Key> parse_key(std::string_view name);
 // 0..9 for Digit0..Digit9, nothing for any other key.

@@ -37,6 +37,7 @@ std::optional<LiveInput> input_of(const SDL_KeyboardEvent& event) {
         case SDLK_COMMA: return LiveInput{Kind::PageKey, Key::Comma};
         case SDLK_UP: return LiveInput{Kind::PageKey, Key::Up};
         case SDLK_DOWN: return LiveInput{Kind::PageKey, Key::Down};
+        case SDLK_SLASH: return LiveInput{Kind::PageKey, Key::Slash};
         // A held Space would pause and go on at every repeat; a held period steps on.
         case SDLK_SPACE:
             if (event.repeat != 0) return std::nullopt;

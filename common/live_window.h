@@ -3,7 +3,7 @@
 // like giflib: a build without it still has this header, but live_window_supported()
 // (build_features.h) says no and --live is refused with the one line kNoLiveSupport.
 //
-// Keys: a-z, 0-9 (and the keypad's), comma, Up and Down go to the page, held keys
+// Keys: a-z, 0-9 (and the keypad's), comma, Up, Down and slash go to the page, held keys
 // repeating as a browser repeats them; Space pauses, period steps, F12 saves the page
 // shown as a PNG, Escape ends, and so does the window's close button (live.h says what
 // each does to the frames).

@@ -16,12 +16,12 @@
 // gives up: the rest of the step after the impact is lost (README.md measures it).
 //
 // The time of impact is found by conservative advancement, for every pair of shapes
-// alike: the gap between the two outlines is measured, and no point of the moving
-// shape travels faster than its centre's speed plus its spin times its reach, so the
-// shape may safely move on by gap / that speed without touching; that is repeated until
-// the gap is under a quarter of the depth. A head-on shot needs one advance, a grazing
-// one a few; kMaxAdvances bounds them, and a shape stopped by that bound is stopped
-// short of the obstacle, never inside it.
+// alike: the gap between the two outlines is measured (5.8: by GJK when one of them is
+// a polygon), and no point of the moving shape travels faster than its centre's speed
+// plus its spin times its reach, so the shape may safely move on by gap / that speed
+// without touching; that is repeated until the gap is under a quarter of the depth. A
+// head-on shot needs one advance, a grazing one a few; kMaxAdvances bounds them, and a
+// shape stopped by that bound is stopped short of the obstacle, never inside it.
 //
 // Every bound comes from the shape's own extent: its reach (a plate's half diagonal)
 // bounds how fast its points move as it turns, and its thinness (half its shorter
@@ -73,8 +73,15 @@ Outline outlineOf(const RigidShape& shape);
 Outline moved(const Outline& outline, Vec2 offset, double turn);
 // The outline with every side pulled in by `depth`.
 Outline shrunk(const Outline& outline, double depth);
-// How far apart the two outlines are; 0 or less when they touch or overlap.
+// How far apart the two outlines are; 0 or less when they touch or overlap. By GJK for
+// two outlines with corners of which one is a polygon's, by the per-kind functions for
+// the rest (continuous.cpp says why).
 double gap(const Outline& a, const Outline& b);
+// Each of the two for every pair of kinds, to race them (bench/gap_study.cpp): 5.6's
+// per-kind functions (a point and a point, a point and corners, corners and corners),
+// and GJK (gjk.h; 0 when they touch or overlap).
+double perKindGap(const Outline& a, const Outline& b);
+double gjkGap(const Outline& a, const Outline& b);
 // A circle's radius, half a rectangle's shorter side.
 double smallestExtent(const RigidShape& shape);
 

@@ -160,7 +160,8 @@ EpaPenetration answerFrom(const Polytope& polygon, const Side& side, Vec2 origin
 
 }  // namespace
 
-std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b) {
+std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b,
+                                             std::vector<Vec2>* polygon_corners) {
     ConvexProxy core_a = a;
     ConvexProxy core_b = b;
     core_a.radius = 0.0;
@@ -186,14 +187,22 @@ std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexP
         flat.converged = false;
         return flat;
     }
+    // The corners, for the diagram, whichever way the loop ends.
+    const auto report = [&] {
+        if (!polygon_corners) return;
+        polygon_corners->clear();
+        for (std::size_t i = 0; i < polygon.size(); ++i) polygon_corners->push_back(polygon[i].w);
+    };
     for (int iteration = 1; iteration <= kMaxEpaIterations; ++iteration) {
         const Side side = nearestSide(polygon);
         const SimplexVertex next = difference.support(side.normal);
         if (polygon.holds(next) || next.w.dot(side.normal) - side.distance <= tolerance) {
+            report();
             return answerFrom(polygon, side, gjk.simplex_origin, iteration, true);
         }
         insertConvex(polygon, side.index, next);
     }
+    report();
     return answerFrom(polygon, nearestSide(polygon), gjk.simplex_origin, kMaxEpaIterations, false);
 }
 

@@ -17,6 +17,7 @@
 // the two must agree (epa_test.cpp: 10,000 random overlapping pairs).
 
 #include <optional>
+#include <vector>
 
 #include "gjk.h"
 
@@ -41,7 +42,10 @@ struct EpaPenetration {
 };
 
 // The penetration of the cores of two proxies (radii are not counted); nothing when
-// they are apart (GJK's distance > 0).
-std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b);
+// they are apart (GJK's distance > 0). With `polygon`, the corners of the polygon EPA
+// ended on (points w of A - B, in order round it) are put there for the overlay's
+// diagram (gjk_overlay.h); its side nearest the origin is the answer's.
+std::optional<EpaPenetration> epaPenetration(const ConvexProxy& a, const ConvexProxy& b,
+                                             std::vector<Vec2>* polygon = nullptr);
 
 }  // namespace engine

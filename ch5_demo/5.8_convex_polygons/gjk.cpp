@@ -254,6 +254,14 @@ DistanceResult answerFrom(const ConvexProxy& a, const ConvexProxy& b, const Simp
     return result;
 }
 
+// The pass as a trace records it: the solved simplex, its nearest point, the direction.
+GjkStep stepOf(const Simplex& simplex, const Nearest& nearest) {
+    GjkStep step{.simplex = simplex, .direction = nearest.toward_origin, .holds_origin = nearest.holds_origin};
+    for (std::size_t i = 0; i < simplex.count; ++i)
+        step.nearest = step.nearest + simplex.vertices[i].w * simplex.vertices[i].weight;
+    return step;
+}
+
 }  // namespace
 
 ConvexProxy makeProxy(std::span<const Vec2> points, double radius) {
@@ -278,7 +286,8 @@ SimplexVertex supportOfDifference(const ConvexProxy& a, const ConvexProxy& b, Ve
     return v;
 }
 
-DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const SimplexCache& start) {
+DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const SimplexCache& start,
+                           std::vector<GjkStep>* trace) {
     const Vec2 origin = a.points[0];
     const LocalShapes shapes = localShapes(a, b, origin);
     // Never less than 1e-13 px: shapes far smaller than a pixel still round off at that.
@@ -287,6 +296,7 @@ DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const Sim
     int iterations = 0;
     while (true) {
         const Nearest nearest = solve(simplex, touching);
+        if (trace) trace->push_back(stepOf(simplex, nearest));
         if (nearest.holds_origin || iterations == kMaxGjkIterations) {
             return answerFrom(a, b, simplex, nearest, origin, iterations);
         }
@@ -297,7 +307,13 @@ DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const Sim
         // reaches as far as its nearest point: d is square to the side).
         const Vec2 d = nearest.toward_origin.normalize();
         const double progress = next.w.dot(d) - simplex.vertices[0].w.dot(d);
-        if (alreadyIn(simplex, next) || progress <= touching) {
+        const bool stops = alreadyIn(simplex, next) || progress <= touching;
+        if (trace) {
+            trace->back().queried = true;
+            trace->back().support = next;
+            trace->back().kept = !stops;
+        }
+        if (stops) {
             return answerFrom(a, b, simplex, nearest, origin, iterations);
         }
         simplex.vertices[simplex.count] = next;

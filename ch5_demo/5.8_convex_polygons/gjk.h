@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "convex_polygon.h"
 
@@ -82,7 +83,22 @@ struct DistanceResult {
     SimplexCache cache;     // the same corners, for the next call
 };
 
-DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const SimplexCache& start = {});
+// One pass of GJK's loop as the loop saw it: what a reader following the walk by hand
+// writes down. The overlay draws a pair's walk from these (gjk_overlay.h), and the tests
+// check them against hand calculations.
+struct GjkStep {
+    Simplex simplex;            // solved: cut to the feature nearest the origin, weighted
+    Vec2 nearest;               // that feature's point nearest the origin: the weighted sum of w
+    Vec2 direction;             // where the pass looked next, towards the origin (not unit)
+    bool holds_origin = false;  // the simplex holds the origin: the walk ends, no query
+    bool queried = false;       // the pass asked A - B for its support point in `direction`
+    SimplexVertex support;      // that point, when queried
+    bool kept = false;          // it came nearer and joined the simplex; if not, the walk ended
+};
+
+// With a `trace`, every pass is appended to it; the answer is the same with or without.
+DistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, const SimplexCache& start = {},
+                           std::vector<GjkStep>* trace = nullptr);
 
 // The overlap test: the rounded shapes touch or overlap exactly when their distance is 0.
 inline bool gjkOverlap(const ConvexProxy& a, const ConvexProxy& b) { return gjkDistance(a, b).distance == 0.0; }

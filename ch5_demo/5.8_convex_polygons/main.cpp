@@ -49,9 +49,10 @@ const browser::StageDefaults kStage{
         {"p", "continuous collision on / off"},
         {"h", "excite: a random velocity for every moving shape"},
         {"f g", "a new rectangle / circle at the selected object"},
+        {"slash", "a new random convex polygon, 3 to 8 corners, at the selected object (also /)"},
         {"r", "reset: keep only the first seven objects"},
     },
-    .overlay = "GJK for the selected shape and the one nearest it: their Minkowski difference in an inset with the origin, GJK's last simplex and the distance, and the closest points on the canvas (--overlay-all: the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
+    .overlay = "GJK for the selected shape and the one nearest it: their Minkowski difference in a row of panels, one a pass of GJK's walk (its simplex, search direction and new point), then the answer: the distance, or EPA's polygon, normal and depth; the closest points on the canvas (--overlay-all: the events, the sweeps, the grid, the islands, chapter 3's and 4's layers, the contacts too)",
     // The page notes the book's quirk beside the echo's mass (docs/errata.md): the echo
     // keeps the book's number.
     .echo_notes = {{"Mass:", "*", "the book's quirk: 1 / (1/mass rounded to 3 digits); docs/errata.md"}},

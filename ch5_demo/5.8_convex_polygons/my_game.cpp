@@ -1,8 +1,6 @@
 #include "my_game.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "circle.h"
@@ -71,28 +69,16 @@ void addRandomShapes(Core& core, browser::Random& random) {
 }
 
 // 5.8: five convex polygons join the book's shapes, drawn after them from the same
-// random numbers (so the book's are the book's): 3 to 8 corners round a circle of
-// radius 12 to 30 px, each corner within its own share of the turn, so that no two
-// bunch up; the book's mass, friction, restitution and velocity.
+// random numbers (so the book's are the book's): polygon.h's random corners, then the
+// book's mass, friction, restitution and velocity.
 constexpr int kPolygons = 5;
-constexpr double kPolygonRadiusMin = 12.0, kPolygonRadiusRange = 18.0;
-constexpr int kFewestCorners = 3, kCornerChoices = 6;  // 3 to 8
 
 void addRandomPolygons(Core& core, browser::Random& random) {
     for (int i = 0; i < kPolygons; ++i) {
         const Vec2 place = randomPlaceInTopHalf(core, random);
-        const int corners = kFewestCorners + static_cast<int>(random.next() * kCornerChoices);
-        const double radius = kPolygonRadiusMin + random.next() * kPolygonRadiusRange;
-        const double start = random.next() * 2 * std::numbers::pi;
-        std::vector<Vec2> outline;
-        for (int k = 0; k < corners; ++k) {
-            // Within the middle 70 % of its share of the turn.
-            const double share = (k + 0.15 + 0.7 * random.next()) / corners;
-            const double angle = start + share * 2 * std::numbers::pi;
-            outline.push_back(Vec2{std::cos(angle), std::sin(angle)} * radius);
-        }
+        const std::vector<Vec2> corners = randomCorners(random);
         const PhysicalAttributes attributes = randomAttributes(random);
-        core.add(Polygon(place, outline, attributes)).setVelocity(randomVelocity(random));
+        core.add(Polygon(place, corners, attributes)).setVelocity(randomVelocity(random));
     }
 }
 

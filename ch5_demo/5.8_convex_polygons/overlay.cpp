@@ -207,7 +207,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
         drawSweeps(sheet, core);
         drawEvents(sheet.canvas, sheet.labels, core, legend);
     }
-    // Last, so that its inset lies over every other layer.
+    // Last, so that its panels lie over every other layer.
     drawGjk(sheet.canvas, sheet.labels, core, legend);
 }
 

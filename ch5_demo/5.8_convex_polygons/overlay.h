@@ -51,8 +51,8 @@
 // where it happened, for half a second, and their counts.
 //
 // 5.8's GJK adds its diagram (gjk_overlay.h): for the selected shape and the one
-// nearest it, their Minkowski difference in an inset, the origin, GJK's last simplex
-// and the distance, and on the canvas the two closest points.
+// nearest it, their Minkowski difference in a row of panels, one a pass of GJK's walk,
+// then the distance or EPA's depth; and on the canvas the two closest points.
 
 #include <cstddef>
 

@@ -1,6 +1,8 @@
 #include "polygon.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "convex_hull.h"
@@ -19,6 +21,13 @@ ConvexPolygon bodyFrom(std::span<const Vec2> corners) {
     const PolygonMass mass = polygonMass(hull.hull->corners());
     return movedBy(*hull.hull, Vec2{} - mass.centroid);
 }
+
+// randomCorners' ranges: a radius of 12 to 30 px, 3 to 8 corners.
+constexpr double kRandomRadiusMin = 12.0, kRandomRadiusRange = 18.0;
+constexpr int kFewestCorners = 3, kCornerChoices = 6;
+// Each corner lies within the middle 70 % of its share of the turn: 15 % kept clear at
+// either end.
+constexpr double kShareMargin = 0.15, kShareUsed = 0.7;
 
 double farthestCorner(const ConvexPolygon& body) {
     double farthest = 0.0;
@@ -64,6 +73,19 @@ void Polygon::draw(browser::Canvas& context) const {
     for (std::size_t i = 1; i < outline_.count; ++i) context.lineTo(outline_.vertices[i].x, outline_.vertices[i].y);
     context.closePath();
     context.stroke();
+}
+
+std::vector<Vec2> randomCorners(browser::Random& random) {
+    const int count = kFewestCorners + static_cast<int>(random.next() * kCornerChoices);
+    const double radius = kRandomRadiusMin + random.next() * kRandomRadiusRange;
+    const double start = random.next() * 2 * std::numbers::pi;
+    std::vector<Vec2> corners;
+    for (int k = 0; k < count; ++k) {
+        const double share = (k + kShareMargin + kShareUsed * random.next()) / count;
+        const double angle = start + share * 2 * std::numbers::pi;
+        corners.push_back(Vec2{std::cos(angle), std::sin(angle)} * radius);
+    }
+    return corners;
 }
 
 ConvexPolygon outlineOf(const Rectangle& rectangle) { return makeConvexPolygon(rectangle.vertices()); }

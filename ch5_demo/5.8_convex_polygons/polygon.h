@@ -15,8 +15,10 @@
 // (polygon_mass.h), as the rectangle's I = m (w^2 + h^2) / 12 does from its sides.
 
 #include <span>
+#include <vector>
 
 #include "convex_polygon.h"
+#include "random.h"
 #include "rigid_shape.h"
 
 namespace engine {
@@ -58,6 +60,13 @@ ConvexPolygon outlineOf(const class Rectangle& rectangle);
 // rectangle as the 4-gon of its corners. The clipping and the contact overlay see both
 // kinds through it.
 ConvexPolygon cornersOf(const RigidShape& shape);
+
+// The corners of a random convex polygon about the origin, for the demo's polygons and
+// the key that drops one (user_control.h): 3 to 8 corners round a circle of radius 12
+// to 30 px, each at a random angle within the middle 70 % of its own share of the turn,
+// so that no two bunch up and the hull keeps every one. Drawn in this order: the count,
+// the radius, the first share's start, then each corner's place in its share.
+std::vector<Vec2> randomCorners(browser::Random& random);
 
 // The book's rectangle-circle test (Figure 3-17) for any convex polygon: the face
 // nearest the circle's centre, then the centre in front of the face or past one of its

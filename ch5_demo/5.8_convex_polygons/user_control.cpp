@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <iterator>
+#include <vector>
 
 #include "circle.h"
+#include "polygon.h"
 #include "rectangle.h"
 
 namespace engine {
@@ -24,8 +26,9 @@ constexpr double kSurfaceStep = 0.01;  // friction per C/V, restitution per B/N 
 // The keys that move, turn, push or change the selected object, or make a new one on it.
 bool changesSelected(browser::Key key) {
     using browser::Key;
-    constexpr Key kChanging[] = {Key::W, Key::S, Key::A, Key::D, Key::Q, Key::E, Key::I, Key::K, Key::J, Key::L,
-                                 Key::U, Key::O, Key::Z, Key::X, Key::C, Key::V, Key::B, Key::N, Key::F, Key::G};
+    constexpr Key kChanging[] = {Key::W, Key::S, Key::A, Key::D, Key::Q, Key::E, Key::I,
+                                 Key::K, Key::J, Key::L, Key::U, Key::O, Key::Z, Key::X,
+                                 Key::C, Key::V, Key::B, Key::N, Key::F, Key::G, Key::Slash};
     return std::find(std::begin(kChanging), std::end(kChanging), key) != std::end(kChanging);
 }
 }  // namespace
@@ -101,6 +104,7 @@ void UserControl::selectedObjectKeys(browser::Key key, RigidShape& selected) {
 
     if (key == Key::F) spawnRectangle(selected.center());
     if (key == Key::G) spawnCircle(selected.center());
+    if (key == Key::Slash) spawnPolygon(selected.center());
 }
 
 // A random kick for everything that can move, to stir a settled scene.
@@ -140,6 +144,12 @@ void UserControl::spawnRectangle(Vec2 center) {
 void UserControl::spawnCircle(Vec2 center) {
     const double radius = random_.next() * kRadiusRange + kRadiusMin;
     core_.add(Circle(center, radius, randomAttributes())).setVelocity(randomVelocity(kSpawnSpeed));
+}
+
+// The same order for a polygon: its corners, the attributes, the velocity.
+void UserControl::spawnPolygon(Vec2 center) {
+    const std::vector<Vec2> corners = randomCorners(random_);
+    core_.add(Polygon(center, corners, randomAttributes())).setVelocity(randomVelocity(kSpawnSpeed));
 }
 
 }  // namespace engine

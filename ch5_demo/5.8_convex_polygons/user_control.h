@@ -17,6 +17,9 @@
 //   H            excite: give every non-static shape a random velocity
 //   F / G        create a rectangle / circle of random size, attributes and velocity
 //                at the selected object
+//   slash        create a random convex polygon there (polygon.h's randomCorners: 3 to
+//                8 corners), with random attributes and velocity: every letter has a
+//                job already, so the polygon has the key after them
 //   R            reset: remove every object but the first kKeptOnReset
 
 #include <cstddef>
@@ -35,7 +38,7 @@ public:
     static constexpr std::size_t kKeptOnReset = 7;
     // H kicks every moving shape: each velocity component uniform in [-250, 250) px/s.
     static constexpr double kExciteSpeed = 250.0;
-    // F/G: a new shape flies off, each velocity component uniform in [-150, 150) px/s.
+    // F/G/slash: a new shape flies off, each velocity component uniform in [-150, 150) px/s.
     static constexpr double kSpawnSpeed = 150.0;
 
     UserControl(Core& core, browser::Random& random) : core_(core), random_(random) {}
@@ -50,6 +53,7 @@ private:
     Vec2 randomVelocity(double largest_component);
     void spawnRectangle(Vec2 center);
     void spawnCircle(Vec2 center);
+    void spawnPolygon(Vec2 center);
 
     Core& core_;
     browser::Random& random_;  // stands in for Math.random()

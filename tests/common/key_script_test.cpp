@@ -27,7 +27,7 @@ std::string error_of(const std::string& script) {
 }  // namespace
 
 TEST_CASE("key_script: every key has a name that parses back to it") {
-    for (int i = 0; i <= static_cast<int>(Key::Down); ++i) {
+    for (int i = 0; i < browser::kKeyCount; ++i) {
         const Key key = static_cast<Key>(i);
         INFO(key_name(key));
         CHECK(browser::parse_key(browser::key_name(key)) == key);
@@ -37,14 +37,19 @@ TEST_CASE("key_script: every key has a name that parses back to it") {
     CHECK(browser::key_name(Key::Comma) == "comma");
     CHECK(browser::key_name(Key::Up) == "up");
     CHECK(browser::key_name(Key::Down) == "down");
+    CHECK(browser::key_name(Key::Slash) == "slash");
+    CHECK(browser::kKeyCount == 26 + 10 + 4);
 }
 
-TEST_CASE("key_script: key names are case-insensitive and comma has two spellings") {
+TEST_CASE("key_script: key names are case-insensitive and comma and slash have two spellings") {
     CHECK(browser::parse_key("G") == Key::G);
     CHECK(browser::parse_key("UP") == Key::Up);
     CHECK(browser::parse_key("Down") == Key::Down);
     CHECK(browser::parse_key("CoMmA") == Key::Comma);
     CHECK(browser::parse_key(",") == Key::Comma);
+    CHECK(browser::parse_key("Slash") == Key::Slash);
+    CHECK(browser::parse_key("/") == Key::Slash);
+    CHECK_FALSE(browser::parse_key("\\").has_value());
     CHECK_FALSE(browser::parse_key("").has_value());
     CHECK_FALSE(browser::parse_key("left").has_value());
     CHECK_FALSE(browser::parse_key("ff").has_value());
@@ -146,7 +151,7 @@ TEST_CASE("key_script: every bad token is named in a one-line message with the v
         const std::string message = error_of("g@2 " + token + " h");
         INFO("token: " << token << "\nmessage: " << message);
         CHECK_THAT(message, Catch::Contains("\"" + token + "\""));
-        CHECK_THAT(message, Catch::Contains("a-z, 0-9, comma, up, down"));
+        CHECK_THAT(message, Catch::Contains("a-z, 0-9, comma, up, down, slash"));
         CHECK(message.find('\n') == std::string::npos);
     }
 }
@@ -160,8 +165,9 @@ TEST_CASE("key_script: the message says what is wrong with the token") {
 }
 
 TEST_CASE("key_script: a key set reads names and ranges, and lists its keys in Key order") {
-    const browser::KeySet set = browser::KeySet::parse("  w a s d\t0-9 UP down , f-h  ");
-    for (const Key key : {Key::W, Key::A, Key::S, Key::D, Key::Up, Key::Down, Key::Comma, Key::F, Key::G, Key::H}) {
+    const browser::KeySet set = browser::KeySet::parse("  w a s d\t0-9 UP down , f-h / ");
+    for (const Key key :
+         {Key::W, Key::A, Key::S, Key::D, Key::Up, Key::Down, Key::Comma, Key::F, Key::G, Key::H, Key::Slash}) {
         INFO(browser::key_name(key));
         CHECK(set.contains(key));
     }
@@ -170,7 +176,7 @@ TEST_CASE("key_script: a key set reads names and ranges, and lists its keys in K
     CHECK_FALSE(set.contains(Key::E));
     CHECK_FALSE(set.contains(Key::I));
     // Letters one by one, three or more neighbouring digits as a range.
-    CHECK(set.text() == "a, d, f, g, h, s, w, 0-9, comma, up, down");
+    CHECK(set.text() == "a, d, f, g, h, s, w, 0-9, comma, up, down, slash");
     CHECK(browser::KeySet::parse("1 2 5").text() == "1, 2, 5");
     CHECK(browser::KeySet::parse("3-5").text() == "3-5");
     CHECK(browser::KeySet::parse("").empty());
