@@ -117,8 +117,9 @@ private:
         Vec2 normal;
         bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
     };
-    // The list of pairs touching, sorted by ids, is kept in three arrays side by side,
-    // entry k of each for the same pair, each read by its own part of the step.
+    // The list of pairs touching, sorted by ids, is kept in three arrays side by side
+    // (marks_, touches_ and found_, below), entry k of each for the same pair, each
+    // read by its own part of the step.
     // What every report looks up (touching() and report(), in the .cpp): the pair, and
     // whether a report of this step has found it. A small entry: the book's passes walk
     // these thousands of times a step.
@@ -132,10 +133,6 @@ private:
         Sighting seen;
         int missed = 0;
     };
-    // The third array, found_, holds where this step's first report found each pair
-    // (where its Mark says found): it becomes the pair's Touch only at the step's end,
-    // when the pair's shapes are known to be still there.
-    //
     // A pair that was not touching, found in this step: it begins, if its shapes are
     // still there at the step's end.
     struct Begin {
@@ -159,6 +156,10 @@ private:
     // serves step after step.
     std::vector<Mark> marks_;
     std::vector<Touch> touches_;
+    // The third: where this step's first report found each pair (where its Mark says
+    // found). It becomes the pair's Touch only at the step's end, once the pair's shapes
+    // are known to be still there: a pair whose shape leaves at the step's end (out of
+    // bounds) ends where it touched in the step before.
     std::vector<Sighting> found_;
     // The step's new pairs, sorted by ids: begun_ from the runs of reports before, run_
     // from the current one.
