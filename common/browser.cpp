@@ -274,6 +274,7 @@ int run(PageScripts& scripts, Window& window, const Options& options, const Worl
         for (int k = 0; k < options.frames; ++k) {
             clock.advanceFrame();
             for (const Key key : options.keys.pressesAt(k)) press_key(scripts, window, options, key);
+            for (const PointerEvent& event : options.keys.pointerAt(k)) scripts.onPointer(event);
             scripts.onAnimationFrame();
             recorder.after_frame(k, document);
             stop_if_interrupted();

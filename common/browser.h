@@ -68,7 +68,8 @@ double encoding_bound(double page_pixels, const Options& options);
 inline constexpr int kOutOfMemoryStatus = 4;
 
 // Runs options.frames (>= 1) frames. Before frame k the clock advances by one frame,
-// the keys scripted for frame k are pressed, then the animation frame runs. The page is
+// the keys scripted for frame k are pressed, the pointer does what the script's drags do
+// before it (pointer.h), then the animation frame runs. The page is
 // saved as frame_NNNN.png after every K-th frame (options.every, k % K == 0) and as
 // final.png after the last one. With K > 0, contact_sheet.png shows those pages and the
 // last one small in a grid (contact_sheet.h). With options.gif, animation.gif gets the

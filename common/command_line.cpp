@@ -335,8 +335,11 @@ void read_key_options(const CLI::App& app, const OptionTexts& texts, const KeySe
     // hides a mistake. The default script may run past a shorter --frames: asking for
     // fewer frames than the demo needs is a fair request.
     if (!texts.live && options.keys_given && options.keys.lastFrame() >= options.frames) {
-        throw UsageError("--keys: a key is pressed before frame " + std::to_string(options.keys.lastFrame()) +
-                         ", but --frames " + std::to_string(options.frames) + " runs only frames 0 to " +
+        const bool pointer =
+            !options.keys.drags().empty() && options.keys.drags().back().releaseFrame() - 1 == options.keys.lastFrame();
+        throw UsageError(std::string("--keys: ") + (pointer ? "a drag has a point" : "a key is pressed") +
+                         " before frame " + std::to_string(options.keys.lastFrame()) + ", but --frames " +
+                         std::to_string(options.frames) + " runs only frames 0 to " +
                          std::to_string(options.frames - 1));
     }
 }

@@ -10,7 +10,8 @@ namespace {
 
 constexpr int kLetterCount = 26;
 constexpr int kDigitCount = 10;
-constexpr const char* kValidKeys = "keys: a-z, 0-9, comma, up, down, slash";
+constexpr const char* kValidKeys = "keys: a-z, 0-9, comma, up, down, slash; drag:X,Y/X,Y...";
+constexpr std::string_view kDragPrefix = "drag:";
 
 // The whole of `text` as a number in [low, high], or nothing: no sign, no spaces, no
 // trailing characters, so "3x", "+3" and "" are all rejected.
@@ -77,6 +78,7 @@ KeyScript KeyScript::parse(std::string_view script) {
     KeyScript result;
     int frame = 0;  // carried from one token to the next, as the grammar says
     int presses = 0;
+    int drag_points = 0;
     std::size_t pos = 0;
     while (pos < script.size()) {
         if (is_space(script[pos])) {
@@ -88,6 +90,25 @@ KeyScript KeyScript::parse(std::string_view script) {
         const std::string_view token = script.substr(pos, end - pos);
         pos = end;
 
+        // drag:POINTS[@FRAME] (pointer.h): the frame as a key's, then the points.
+        if (token.starts_with(kDragPrefix)) {
+            std::string_view points = token.substr(kDragPrefix.size());
+            if (const auto at = points.find('@'); at != std::string_view::npos) {
+                const auto parsed = whole_number(points.substr(at + 1), 0, kMaxFrame);
+                if (!parsed) reject(token, "frame must be a whole number from 0 to " + std::to_string(kMaxFrame));
+                frame = *parsed;
+                points = points.substr(0, at);
+            }
+            DragPoints parsed = parse_drag_points(points, static_cast<std::size_t>(kMaxDragPoints - drag_points));
+            if (!parsed.refusal.empty()) reject(token, parsed.refusal);
+            drag_points += static_cast<int>(parsed.points.size());
+            try {
+                result.drag({frame, std::move(parsed.points)});
+            } catch (const KeyScriptError& error) {
+                reject(token, error.what());
+            }
+            continue;
+        }
         // KEY[*COUNT][@FRAME]: everything after the first '@' is the frame, so a stray
         // '*' or second '@' there is reported as a bad frame.
         std::string_view rest = token;
@@ -197,9 +218,36 @@ std::size_t KeyScript::pressCount(const KeySet& keys) const {
     return count;
 }
 
-int KeyScript::firstFrame() const { return presses_.empty() ? -1 : presses_.begin()->first; }
+int KeyScript::firstFrame() const {
+    int first = presses_.empty() ? -1 : presses_.begin()->first;
+    if (!drags_.empty() && (first < 0 || drags_.front().frame < first)) first = drags_.front().frame;
+    return first;
+}
 
-int KeyScript::lastFrame() const { return presses_.empty() ? -1 : presses_.rbegin()->first; }
+int KeyScript::lastFrame() const {
+    const int last = presses_.empty() ? -1 : presses_.rbegin()->first;
+    return drags_.empty() ? last : std::max(last, drags_.back().releaseFrame() - 1);
+}
+
+std::vector<PointerEvent> KeyScript::pointerAt(int frame) const {
+    std::vector<PointerEvent> events;
+    // The drags about `frame`: the one that ends there, and the one that starts there.
+    auto drag = std::lower_bound(drags_.begin(), drags_.end(), frame,
+                                 [](const Drag& d, int at) { return d.releaseFrame() < at; });
+    for (; drag != drags_.end() && drag->frame <= frame; ++drag) {
+        if (const auto event = drag->eventAt(frame)) events.push_back(*event);
+    }
+    return events;
+}
+
+void KeyScript::drag(Drag drag) {
+    if (drag.points.empty()) throw KeyScriptError("a drag needs at least one point");
+    if (!drags_.empty() && drag.frame < drags_.back().releaseFrame()) {
+        throw KeyScriptError("it starts before frame " + std::to_string(drags_.back().releaseFrame()) +
+                             ", where the drag before it is let go");
+    }
+    drags_.push_back(std::move(drag));
+}
 
 std::optional<Key> KeyScript::firstKeyOutside(const KeySet& keys) const {
     for (const auto& [frame, pressed] : presses_) {
@@ -214,7 +262,16 @@ void KeyScript::press(int frame, Key key) { presses_[frame].push_back(key); }
 
 std::string KeyScript::text() const {
     std::string text;
+    auto drag = drags_.begin();
+    // The drags that start before `frame`'s keys, or at the end, all that are left.
+    const auto dragsBefore = [&](int frame) {
+        for (; drag != drags_.end() && drag->frame < frame; ++drag) {
+            if (!text.empty()) text += ' ';
+            text += drag_text(*drag) + '@' + std::to_string(drag->frame);
+        }
+    };
     for (const auto& [frame, pressed] : presses_) {
+        dragsBefore(frame);
         std::size_t i = 0;
         while (i < pressed.size()) {
             // A run longer than parse() takes as one count is written as several tokens.
@@ -230,6 +287,7 @@ std::string KeyScript::text() const {
             i = repeat;
         }
     }
+    dragsBefore(kMaxFrame + 1);
     return text;
 }
 

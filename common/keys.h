@@ -9,6 +9,9 @@
 //   FRAME  press it before frame FRAME (0-based); a token without @ happens at the
 //          frame of the token before it (frame 0 at the start)
 // Example: "f*3 g@10 up e*5@20"
+// A token that starts with "drag:" is a drag of the pointer, one point a frame, with the
+// same optional @FRAME (pointer.h): "drag:100,50*3/120,50@10". Before a frame the page
+// gets that frame's key presses first, then its pointer's event.
 
 #include <bitset>
 #include <cstddef>
@@ -18,6 +21,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "pointer.h"
 
 namespace browser {
 
@@ -72,6 +77,9 @@ public:
     // In all, over every token: a press may add an object to the page's world, and every
     // later step may work on every pair of objects.
     static constexpr int kMaxPresses = 2'000;
+    // The frames the pointer is held down, over every drag: a drag costs the page
+    // nothing the keys' limits guard against, but its points are kept in memory.
+    static constexpr int kMaxDragPoints = 1'000'000;
 
     KeyScript() = default;
     // Throws KeyScriptError with one line naming the token and listing the valid keys.
@@ -83,10 +91,19 @@ public:
     std::size_t pressCount() const;
     // How many presses there are of the keys in `keys`.
     std::size_t pressCount(const KeySet& keys) const;
-    // The first and the last frame any key is pressed at (-1 for an empty script).
+    // The first and the last frame any key is pressed at, or a drag has a point at (-1
+    // for an empty script). A drag's release, one frame after its last point, may come
+    // after a run's last frame: the run ends with the pointer held.
     int firstFrame() const;
     int lastFrame() const;
-    bool empty() const { return presses_.empty(); }
+    bool empty() const { return presses_.empty() && drags_.empty(); }
+
+    // What the pointer does before `frame`: a press, a move or a release, or nothing.
+    std::vector<PointerEvent> pointerAt(int frame) const;
+    // Adds a drag (pointer.h) that starts after the last one ended; throws
+    // KeyScriptError when it does not.
+    void drag(Drag drag);
+    const std::vector<Drag>& drags() const { return drags_; }
     // The first key of the script, in frame order, that `keys` does not hold.
     std::optional<Key> firstKeyOutside(const KeySet& keys) const;
 
@@ -94,12 +111,14 @@ public:
     void press(int frame, Key key);
     // The script as text that parse() reads back to the same presses: every token
     // carries its frame, and a key pressed several times in a row is one KEY*COUNT
-    // token ("f@12 d*3@40 comma@40"). "" for an empty script.
+    // token ("f@12 d*3@40 comma@40"); each drag is one token, after the keys of its
+    // first frame ("drag:100,50*3/120,50@40"). "" for an empty script.
     std::string text() const;
     friend bool operator==(const KeyScript&, const KeyScript&) = default;
 
 private:
     std::map<int, std::vector<Key>> presses_;
+    std::vector<Drag> drags_;  // in the order of their frames, none overlapping
 };
 
 }  // namespace browser

@@ -1,5 +1,6 @@
 #include "live.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -115,6 +116,9 @@ public:
         for (const Key key : options_.keys.pressesAt(frame)) press(frame, key);
         for (const Key key : waiting_) press(frame, key);
         waiting_.clear();
+        for (const PointerEvent& event : options_.keys.pointerAt(frame)) scripts_.onPointer(event);
+        recordScriptedDrag(frame);
+        movePointer(frame);
         scripts_.onAnimationFrame();
         page_ = render_page(window_.document);
         ++frames_run_;
@@ -130,6 +134,14 @@ public:
                     if (paused_) ++steps_;
                     break;
                 case LiveInput::Kind::Screenshot: saveShownPage(); break;
+                case LiveInput::Kind::PointerPress:
+                    if (const auto point = onCanvas(input, false); point && !drag_ && !press_) press_ = point;
+                    break;
+                case LiveInput::Kind::PointerMove: pointer_ = *onCanvas(input, true); break;
+                case LiveInput::Kind::PointerRelease:
+                    pointer_ = *onCanvas(input, true);
+                    if (drag_ || press_) release_ = true;
+                    break;
                 case LiveInput::Kind::PageKey:
                     if (options_.stage_keys.empty() || options_.stage_keys.contains(input.key)) {
                         waiting_.push_back(input.key);
@@ -153,6 +165,13 @@ public:
             runFrame();
         }
     }
+
+    // The session is over: a drag still held is recorded up to its last frame.
+    void finish() {
+        if (drag_) recorded_.drag(std::move(*drag_));
+        drag_.reset();
+    }
+    int drags() const { return static_cast<int>(recorded_.drags().size()); }
 
     Image picture() const { return with_status_line(page_, status(), window_.document.canvas.scale()); }
     int framesRun() const { return frames_run_; }
@@ -180,6 +199,59 @@ private:
             screenshot_failed_ = true;
         }
         notice_refreshes_ = kNoticeRefreshes;
+    }
+
+    // The picture's point as a canvas point, whole px (its top-left corner is the
+    // canvas's, --scale device pixels a px); outside the canvas, nothing, or with
+    // `held`, the nearest canvas point.
+    std::optional<PointerPoint> onCanvas(const LiveInput& input, bool held) const {
+        const Canvas& canvas = window_.document.canvas;
+        const int scale = canvas.scale();
+        // Floor, not truncation: -1 device px is outside, not at 0.
+        const auto floor_div = [scale](int v) { return v >= 0 ? v / scale : -((-v + scale - 1) / scale); };
+        PointerPoint point{floor_div(input.x), floor_div(input.y)};
+        const bool inside = point.x >= 0 && point.y >= 0 && point.x < canvas.width() && point.y < canvas.height();
+        if (!inside && !held) return std::nullopt;
+        point.x = std::clamp(point.x, 0, canvas.width() - 1);
+        point.y = std::clamp(point.y, 0, canvas.height() - 1);
+        return point;
+    }
+
+    // Before frame `frame` the pointer does what the reader did since the last frame:
+    // the drag under way lets go, or follows the pointer one point more; then a press
+    // waiting starts a new one. Each event comes from the drag itself (Drag::eventAt),
+    // as in the replay, so the two cannot tell the page different things.
+    void movePointer(int frame) {
+        if (drag_ && release_) {
+            deliver(*drag_, frame);
+            recorded_.drag(std::move(*drag_));
+            drag_.reset();
+            release_ = false;
+        } else if (drag_) {
+            drag_->points.push_back(pointer_);
+            deliver(*drag_, frame);
+        }
+        if (press_ && frame > scripted_until_) {
+            drag_ = Drag{frame, {*press_}};
+            pointer_ = *press_;
+            press_.reset();
+            deliver(*drag_, frame);
+        }
+    }
+
+    // A drag of --keys starting at `frame` is recorded as its keys are, so the replay has
+    // it too; the reader's pointer waits while it is under way.
+    void recordScriptedDrag(int frame) {
+        for (const Drag& scripted : options_.keys.drags()) {
+            if (scripted.frame > frame) break;
+            if (frame <= scripted.releaseFrame()) scripted_until_ = scripted.releaseFrame();
+            if (scripted.frame != frame || drag_) continue;  // the reader's, under way, is recorded instead
+            recorded_.drag(scripted);
+        }
+    }
+
+    void deliver(const Drag& drag, int frame) {
+        if (const auto event = drag.eventAt(frame)) scripts_.onPointer(*event);
     }
 
     void press(int frame, Key key) {
@@ -213,6 +285,11 @@ private:
     Image page_;
     std::vector<Key> waiting_;  // pressed by the reader, for the next frame that runs
     KeyScript recorded_;
+    std::optional<Drag> drag_;           // the reader's drag under way, its points so far
+    std::optional<PointerPoint> press_;  // a press on the canvas, for the next frame that runs
+    bool release_ = false;               // the button came up, for the next frame that runs
+    int scripted_until_ = -1;            // the release frame of the last drag of --keys begun
+    PointerPoint pointer_;               // where the pointer last was, held on the canvas
     int presses_ = 0;
     int frames_run_ = 0;
     bool paused_ = false;
@@ -241,6 +318,7 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
         screen.show(session.picture());
         stop_if_interrupted();  // a session with --dump notes Ctrl-C (interruption.h)
     }
+    session.finish();
     try {
         screen.close();
     } catch (const FileError& error) {
@@ -263,9 +341,13 @@ int run_live(PageScripts& scripts, Window& window, const Options& options, Scree
                   << "; it was: " << script << '\n';
         return 1;
     }
-    std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses") << " in "
-              << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to " << record.string()
-              << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
+    const int drags = session.drags();
+    std::cout << "recorded " << session.presses() << (session.presses() == 1 ? " key press" : " key presses")
+              << (drags == 0   ? ""
+                  : drags == 1 ? " and 1 drag"
+                               : " and " + std::to_string(drags) + " drags")
+              << " in " << frames << (frames == 1 ? " frame" : " frames") << " (" << seconds << " s) to "
+              << record.string() << "; replay them into pictures" << (gif_supported() ? " and a GIF" : "") << " with:\n"
               << "  " << replay_command(options.live, frames, session.recorded().firstFrame()) << '\n';
     return session.screenshotFailed() ? 1 : 0;
 }

@@ -28,6 +28,16 @@
 // <stage id>_frame_NNNN.png, NNNN the frame shown: the replay's frame_NNNN.png of the
 // same frame is the same picture.
 //
+// The pointer. A press on the canvas (the left mouse button) starts a drag, which the
+// page gets as pointer events (pointer.h) at whole canvas px: the press before the next
+// frame that runs, then before each frame after it a move wherever the pointer is then
+// (nothing where it stayed), and the release before the frame after the one the button
+// came up in time for (a press and a release between two frames make a one-frame drag).
+// A move outside the canvas is held at its edge; a press outside it does nothing. The
+// drag is recorded as one token ("drag:412,203/420,205*3@40", keys.h), which the replay
+// turns into the same events before the same frames; a drag still held when the
+// session ends is recorded up to its last frame.
+//
 // Under the page the window shows one status line (the frame, whether it is paused,
 // the keys waiting, the live keys); the page above it is the saved picture, pixel for
 // pixel (page.h's with_status_line).
@@ -41,11 +51,13 @@
 
 namespace browser {
 
-// What the reader did at the keyboard or to the window.
+// What the reader did at the keyboard, with the mouse or to the window.
 struct LiveInput {
-    enum class Kind { PageKey, Pause, Step, Screenshot, End };
+    enum class Kind { PageKey, Pause, Step, Screenshot, End, PointerPress, PointerMove, PointerRelease };
     Kind kind = Kind::PageKey;
     Key key = Key::A;  // the key, for PageKey
+    int x = 0;         // where the pointer is, for the Pointer kinds: px of the picture shown
+    int y = 0;         // (the page's device pixels) from its top-left corner
 };
 
 // Where a live session shows its pictures and hears the reader: a window

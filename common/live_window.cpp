@@ -51,10 +51,34 @@ std::optional<LiveInput> input_of(const SDL_KeyboardEvent& event) {
     }
 }
 
-// A scripted event of the --live-events test hook: a key, or the close button (0).
+// A scripted event of the --live-events test hook: a key, or the close button (0), or
+// the left mouse button pressed, moved with or let go at a point of the window.
 struct ScriptedEvent {
     SDL_Keycode key = 0;
+    Uint32 mouse = 0;  // SDL_MOUSEBUTTONDOWN, SDL_MOUSEMOTION or SDL_MOUSEBUTTONUP; 0 for a key
+    int x = 0, y = 0;
 };
+
+// "press:X,Y", "move:X,Y" or "release:X,Y": the mouse event, or nothing.
+std::optional<ScriptedEvent> mouse_event(const std::string& name) {
+    const std::size_t colon = name.find(':');
+    const std::size_t comma = name.find(',');
+    if (colon == std::string::npos || comma == std::string::npos || comma < colon) return std::nullopt;
+    const std::string kind = name.substr(0, colon);
+    ScriptedEvent event;
+    event.mouse = kind == "press"     ? SDL_MOUSEBUTTONDOWN
+                  : kind == "move"    ? SDL_MOUSEMOTION
+                  : kind == "release" ? SDL_MOUSEBUTTONUP
+                                      : 0;
+    const char* x_end = name.data() + comma;
+    const char* y_end = name.data() + name.size();
+    const auto [x_stop, x_error] = std::from_chars(name.data() + colon + 1, x_end, event.x);
+    const auto [y_stop, y_error] = std::from_chars(x_end + 1, y_end, event.y);
+    if (event.mouse == 0 || x_error != std::errc{} || x_stop != x_end || y_error != std::errc{} || y_stop != y_end) {
+        return std::nullopt;
+    }
+    return event;
+}
 
 std::map<int, std::vector<ScriptedEvent>> read_events(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -72,13 +96,15 @@ std::map<int, std::vector<ScriptedEvent>> read_events(const std::filesystem::pat
         const char* last = token.data() + token.size();
         const auto [stop, error] = std::from_chars(first, last, refresh);
         const std::string name = token.substr(0, at);
-        const SDL_Keycode key = name == "close" ? 0 : SDL_GetKeyFromName(name.c_str());
+        const std::optional<ScriptedEvent> mouse = mouse_event(name);
+        const SDL_Keycode key = name == "close" || mouse ? 0 : SDL_GetKeyFromName(name.c_str());
         if (at == std::string::npos || error != std::errc{} || stop != last || refresh < 1 ||
-            (name != "close" && key == SDLK_UNKNOWN)) {
-            throw LiveWindowError("--live-events: bad token \"" + token +
-                                  "\" (NAME@REFRESH, NAME an SDL key name or close)");
+            (name != "close" && !mouse && key == SDLK_UNKNOWN)) {
+            throw LiveWindowError(
+                "--live-events: bad token \"" + token +
+                "\" (NAME@REFRESH, NAME an SDL key name, close, or press:X,Y, move:X,Y, release:X,Y)");
         }
-        events[refresh].push_back({key});
+        events[refresh].push_back(mouse ? *mouse : ScriptedEvent{key});
     }
     return events;
 }
@@ -164,6 +190,13 @@ public:
                 inputs.push_back({LiveInput::Kind::End});
             } else if (event.type == SDL_KEYDOWN) {
                 if (const auto input = input_of(event.key)) inputs.push_back(*input);
+            } else if ((event.type == SDL_MOUSEBUTTONDOWN || event.type == SDL_MOUSEBUTTONUP) &&
+                       event.button.button == SDL_BUTTON_LEFT) {
+                const auto kind =
+                    event.type == SDL_MOUSEBUTTONDOWN ? LiveInput::Kind::PointerPress : LiveInput::Kind::PointerRelease;
+                inputs.push_back({.kind = kind, .x = event.button.x, .y = event.button.y});
+            } else if (event.type == SDL_MOUSEMOTION) {
+                inputs.push_back({.kind = LiveInput::Kind::PointerMove, .x = event.motion.x, .y = event.motion.y});
             }
         }
         return inputs;
@@ -220,7 +253,21 @@ private:
     void push(const ScriptedEvent& scripted) {
         SDL_Event event{};
         const Uint32 window_id = window_ ? SDL_GetWindowID(window_.get()) : 0;
-        if (scripted.key == 0) {
+        if (scripted.mouse == SDL_MOUSEMOTION) {
+            event.type = SDL_MOUSEMOTION;
+            event.motion.windowID = window_id;
+            event.motion.state = SDL_BUTTON_LMASK;
+            event.motion.x = scripted.x;
+            event.motion.y = scripted.y;
+        } else if (scripted.mouse != 0) {
+            event.type = scripted.mouse;
+            event.button.windowID = window_id;
+            event.button.button = SDL_BUTTON_LEFT;
+            event.button.state = scripted.mouse == SDL_MOUSEBUTTONDOWN ? SDL_PRESSED : SDL_RELEASED;
+            event.button.clicks = 1;
+            event.button.x = scripted.x;
+            event.button.y = scripted.y;
+        } else if (scripted.key == 0) {
             event.type = SDL_WINDOWEVENT;
             event.window.windowID = window_id;
             event.window.event = SDL_WINDOWEVENT_CLOSE;

@@ -3,6 +3,8 @@
 // like giflib: a build without it still has this header, but live_window_supported()
 // (build_features.h) says no and --live is refused with the one line kNoLiveSupport.
 //
+// The left mouse button pressed, the pointer moved and the button let go go to the
+// session as pointer inputs at window px, which are the picture's (live.h).
 // Keys: a-z, 0-9 (and the keypad's), comma, Up, Down and slash go to the page, held keys
 // repeating as a browser repeats them; Space pauses, period steps, F12 saves the page
 // shown as a PNG, Escape ends, and so does the window's close button (live.h says what
@@ -14,7 +16,9 @@
 //                            shows), the window pushes a key-down event for the SDL key
 //                            named NAME ("F", "Space", ",", ".", "F12", "Escape", "Up") into
 //                            SDL's event queue, or for NAME "close" the close button's
-//                            event; from there on they go the way a real key's do.
+//                            event, or for "press:X,Y", "move:X,Y", "release:X,Y" the left
+//                            mouse button's at window px (X, Y); from there on they go the
+//                            way a real key's or mouse's do.
 //   --live-screenshot FILE   when the session ends, writes the last picture the window
 //                            showed, as SDL reads it back from the renderer, as a PNG.
 

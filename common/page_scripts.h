@@ -10,6 +10,7 @@
 #include "command_line.h"
 #include "keys.h"
 #include "page.h"
+#include "pointer.h"
 
 namespace browser {
 
@@ -42,6 +43,9 @@ public:
     virtual ~PageScripts() = default;
     virtual void onKeyDown(Key key) = 0;  // <body onkeydown="userControl(event)">
     virtual void onAnimationFrame() = 0;  // the requestAnimationFrame callback
+    // The pointer pressed, moved or let go on the canvas (pointer.h): onmousedown,
+    // onmousemove, onmouseup. The book's pages take no pointer, and ignore it.
+    virtual void onPointer(const PointerEvent& event) { static_cast<void>(event); }
 };
 
 // A key press reaching the page: on a stage with an overlay, kOverlayKey takes the

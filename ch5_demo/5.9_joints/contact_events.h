@@ -30,7 +30,7 @@
 // shapes leave the list. Its normal points from the first shape to the second.
 
 #include <cstddef>
-#include <cstdint>
+#include <deque>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -103,30 +103,47 @@ public:
     // What happened in the last step, in order (with the keys' before it).
     const std::vector<ContactEvent>& events() const { return events_; }
     // What happened in the last kShownSteps steps, oldest first (the overlay's).
-    const std::vector<ContactEvent>& recent() const { return recent_; }
+    const std::deque<ContactEvent>& recent() const { return recent_; }
     // The step the events were last told for.
     long step() const { return step_; }
     // How many pairs touch now.
-    std::size_t touchingCount() const { return touching_.size(); }
+    std::size_t touchingCount() const { return marks_.size(); }
 
 private:
     using PairIds = std::pair<BodyId, BodyId>;
-    struct Touch {
-        PairIds pair;
+    // Where and how a report found a pair touching.
+    struct Sighting {
         Vec2 point;
         Vec2 normal;
-        double speed = 0.0;   // approach speed when first found in the step
-        int missed = 0;       // steps in a row that have not found it
         bool sensor = false;  // one of the two is a sensor: it feels, it is not struck
     };
-    ContactEvent eventOf(EventKind kind, const Touch& touch) const;
-    // Whether this is the step's first report of the pair, which found_ keeps: the
-    // book's passes find a pair again in every pass, and the first report, from before
-    // anything resolved it, has the speed the pair met at. If so, the pair's report is
-    // to be the next one in found_.
-    bool firstReport(PairIds pair);
-    std::size_t slotOf(PairIds pair) const;
-    void holdReports(std::size_t reports);
+    // The list of pairs touching, sorted by ids, is kept in three arrays side by side
+    // (marks_, touches_ and found_, below), entry k of each for the same pair, each
+    // read by its own part of the step.
+    // What every report looks up (touching() and report(), in the .cpp): the pair, and
+    // whether a report of this step has found it. A small entry: the book's passes walk
+    // these thousands of times a step.
+    struct Mark {
+        PairIds pair;
+        bool found = false;
+    };
+    // What the step's end reads: where the pair touched in the last step that found it
+    // (its end is told there), and how many steps in a row have not found it.
+    struct Touch {
+        Sighting seen;
+        int missed = 0;
+    };
+    // A pair that was not touching, found in this step: it begins, if its shapes are
+    // still there at the step's end.
+    struct Begin {
+        PairIds pair;
+        Sighting seen;
+        double speed = 0.0;  // px/s, how fast its surfaces met (worked out for a begin only)
+    };
+    ContactEvent eventOf(EventKind kind, PairIds pair, const Sighting& seen, double speed = 0.0) const;
+    // A pair found touching: written down if this is the step's first report of it.
+    void report(const RigidShape& a, const RigidShape& b, Vec2 point, Vec2 normal, bool sensor);
+    void closeRun();
 
     unsigned readers_ = 0;  // EventReader bits
     // A reader who starts listening after steps have run hears of what changes from
@@ -134,19 +151,35 @@ private:
     // begin (the overlay turned on with t would otherwise see every resting pair begin).
     bool taking_in_ = false;
     long step_ = 0;
-    std::vector<Touch> found_;  // this step's first report of each pair found
-    // Where each pair of found_ is, looked up by its ids: a table of found_'s indices + 1
-    // (0 for an empty slot), at most half full, each pair in the first free slot from
-    // where its ids hash to. A lookup costs about the same however many pairs touch;
-    // sorting every pass's reports to find the first of each cost a rain of 1000 a
-    // fifth of its step (bench: the speed study).
-    std::vector<std::uint32_t> first_report_;
-    std::vector<BodyId> ids_;      // the shapes' ids at the end of the step, in the list's order
-    std::vector<Touch> touching_;  // the pairs touching, by pair
-    std::vector<Touch> next_;      // endStep's new touching_, swapped in
+    // The pairs touching (above). Kept from step to step: the step's end writes the new
+    // list into next_marks_ and next_touches_ and swaps them in, so the same memory
+    // serves step after step.
+    std::vector<Mark> marks_;
+    std::vector<Touch> touches_;
+    // The third: where this step's first report found each pair (where its Mark says
+    // found). It becomes the pair's Touch only at the step's end, once the pair's shapes
+    // are known to be still there: a pair whose shape leaves at the step's end (out of
+    // bounds) ends where it touched in the step before.
+    std::vector<Sighting> found_;
+    // The step's new pairs, sorted by ids: begun_ from the runs of reports before, run_
+    // from the current one.
+    std::vector<Begin> begun_;
+    std::vector<Begin> run_;
+    // Where the current run of reports stands: the last pair report() took, and how far
+    // the run has walked marks_ (to the first pair after its last report: a pass that
+    // finds the pairs the pass before found finds each one next in line) and begun_.
+    PairIds last_report_;
+    std::size_t marks_walked_ = 0;
+    std::size_t begun_walked_ = 0;
+    std::vector<BodyId> ids_;  // the shapes' ids, in the list's order (shapeWithId's)
+    std::vector<Mark> next_marks_;
+    std::vector<Touch> next_touches_;
+    std::vector<Begin> next_begun_;
     std::vector<ContactEvent> events_;
     std::vector<ContactEvent> pending_;  // the keys' since the last step
-    std::vector<ContactEvent> recent_;
+    // Oldest first, as they happened: a step drops the oldest from the front and adds
+    // its own at the back, and no event in between is moved.
+    std::deque<ContactEvent> recent_;
 };
 
 }  // namespace engine

@@ -71,8 +71,9 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& isl
             break;
     }
     // The shapes' own step adds this step's gravity again (see prepare).
+    // A kinematic shape's (5.9) is its own: no impulse changed it.
     for (std::size_t i = 0; i < shapes.size(); ++i) {
-        if (shapes[i]->isResting()) continue;
+        if (shapes[i]->isResting() || shapes[i]->isKinematic()) continue;
         shapes[i]->setVelocity(bodies_[i].velocity.linear - gravityThisStep(world));
         shapes[i]->setAngularVelocity(bodies_[i].velocity.angular);
     }
@@ -145,6 +146,7 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
         const RigidShape& a = *shapes[i];
         const RigidShape& b = *shapes[j];
         if (a.isResting() && b.isResting()) return false;
+        if (!a.isDynamic() && !b.isDynamic()) return false;  // 5.9: both of infinite mass
         // Two bodies a joint holds together do not collide (joints.h): a chain's links
         // overlap at their pins.
         if (joints.keepsApart(a.id(), b.id())) return false;
@@ -203,7 +205,7 @@ void ContactSolver::prepare(ShapeList shapes, const WorldSettings& world) {
         // right are the ones the shapes will move with, so the solver works on them:
         // were it to stop a resting box and let gravity add g dt afterwards, the box
         // would move g dt^2 into the floor, and down a slope, every step.
-        const Vec2 gravity = shape.isStatic() ? Vec2{} : gravityThisStep(world);
+        const Vec2 gravity = shape.isDynamic() ? gravityThisStep(world) : Vec2{};
         bodies_[i] = SolverBody{.velocity = {shape.velocity() + gravity, shape.angularVelocity()},
                                 .pseudo = {},
                                 .inv_mass = shape.invMass(),

@@ -333,7 +333,8 @@ void ContinuousCollision::sweep(ShapeList shapes, const Joints* joints) {
     }
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         RigidShape& shape = *shapes[i];
-        if (shape.isResting() || shape.isSensor()) continue;  // nothing stops a sensor
+        // Nothing stops a sensor, nor a kinematic shape (5.9), which moves by its velocity.
+        if (shape.isResting() || shape.isSensor() || shape.isKinematic()) continue;
         const Pose& start = start_[i];
         const Vec2 offset = shape.center() - start.center;
         const double turn = shape.angle() - start.angle;

@@ -142,6 +142,7 @@ void Core::update() {
     WorldSettings sub_step = settings_;
     sub_step.dt = settings_.dt / settings_.substeps;
     for (int k = 0; k < settings_.substeps; ++k) {
+        mouse_.apply(all_objects_, sub_step);  // 5.9: nothing while no shape is held
         physics_.collision(all_objects_, sub_step);
         if (settings_.continuous) continuous_.startStep(all_objects_);
         for (const auto& shape : all_objects_) {
@@ -170,6 +171,20 @@ void Core::update() {
     // The step is over: now the game may read what happened and change the world.
     if (game_) game_->afterStep(*this);
     if (step_listener_) step_listener_();
+}
+
+bool Core::grab(Vec2 point) {
+    const std::optional<std::size_t> grabbed = mouse_.grab(all_objects_, point);
+    if (grabbed) wakeIslandOf(*grabbed);
+    return grabbed.has_value();
+}
+
+void Core::dragTo(Vec2 point) {
+    if (!mouse_.holding()) return;
+    mouse_.moveTo(point);
+    for (std::size_t i = 0; i < all_objects_.size(); ++i) {
+        if (all_objects_[i]->id() == mouse_.body() && all_objects_[i]->sleep().asleep) wakeIslandOf(i);
+    }
 }
 
 void Core::leaveContacts(std::size_t index) {
@@ -266,6 +281,7 @@ void Core::draw() {
                                                       : browser::colors::kBlue);
         shape.draw(context);
     }
+    mouse_.draw(context, all_objects_);  // 5.9: the pull, while a shape is held
 }
 
 }  // namespace engine

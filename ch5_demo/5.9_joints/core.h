@@ -15,6 +15,7 @@
 
 #include "browser.h"
 #include "continuous.h"
+#include "mouse_joint.h"
 #include "physics.h"
 #include "rigid_shape.h"
 #include "world_settings.h"
@@ -152,6 +153,14 @@ public:
     // It turns on the events it reads; the core does not own it.
     void setGame(GameLogic* game);
 
+    // 5.9: the mouse (mouse_joint.h). A press at `point` grabs the shape there that
+    // forces move, and wakes its island; the pointer's moves pull it there, and wake it;
+    // the release lets it go. Returns whether a press grabbed something.
+    bool grab(Vec2 point);
+    void dragTo(Vec2 point);
+    void letGo() { mouse_.release(); }
+    const MouseJoint& mouse() const { return mouse_; }
+
 private:
     void toggleSetting(bool WorldSettings::*flag);
     bool isOutOfBounds(const RigidShape& shape) const;
@@ -167,6 +176,7 @@ private:
     FixedStepTimer timer_;
     Physics physics_;  // the book's gEngine.Physics
     ContinuousCollision continuous_;
+    MouseJoint mouse_;
     long step_count_ = 0;
     std::function<void()> step_listener_;
     GameLogic* game_ = nullptr;

@@ -47,6 +47,7 @@ void Islands::startStep(ShapeList shapes) {
     std::iota(parent_.begin(), parent_.end(), std::size_t{0});
     deepest_.assign(count, 0.0);
     held_.assign(count, 0);
+    carried_.assign(count, 0);
     step_start_center_.resize(shapes.size());
     step_start_angle_.resize(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
@@ -62,8 +63,11 @@ bool Islands::touching(ShapeList shapes, std::size_t i, std::size_t j, double de
     deepest_[j] = std::max(deepest_[j], depth);
     held_[i] = held_[j] = 1;
     // Never through a static shape: it holds what lies on it, but carries no motion from
-    // one of them to another.
-    if (!shapes[i]->isStatic() && !shapes[j]->isStatic()) parent_[root(i)] = root(j);
+    // one of them to another. Nor through a kinematic one (5.9), which nothing they do
+    // moves; but while it moves it keeps what it touches from resting.
+    if (shapes[i]->isDynamic() && shapes[j]->isDynamic()) parent_[root(i)] = root(j);
+    if (shapes[i]->isKinematic() && !shapes[i]->isResting()) carried_[j] = 1;
+    if (shapes[j]->isKinematic() && !shapes[j]->isResting()) carried_[i] = 1;
     // An awake shape has reached a sleeping one: the sleeper's island must take part in
     // this very step, or the awake shape would sink into it as into a static wall. Its
     // rest goes on: nothing has moved it yet. Were it to start again, a shape at the edge
@@ -105,13 +109,13 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
     island_rested_.assign(count, std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < count; ++i) {
         RigidShape& shape = *shapes[i];
-        if (shape.isResting()) continue;
+        if (shape.isResting() || shape.isKinematic()) continue;
         // The book's passes leave a resting box rocking on its corners, off the floor
         // every other step: a contact in this step or the last one holds it.
         const bool held = held_[i] || shape.sleep().held;
         const double speed = sleepSpeed(shape, step_start_center_[i], step_start_angle_[i], deepest_[i], world);
         const bool resting = world.movement && (held || !falling_without_support) && speed < sleepSpeed(world) &&
-                             driftSinceRest(shape) <= driftAllowed(world);
+                             driftSinceRest(shape) <= driftAllowed(world) && !carried_[i];
         shape.rest(resting, held_[i], speed, world.dt, world.time_to_sleep);
         double& rested = island_rested_[root(i)];
         rested = std::min(rested, shape.sleep().rested_s);
@@ -119,7 +123,7 @@ void Islands::endStep(ShapeList shapes, const WorldSettings& world) {
     island_label_.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
         RigidShape& shape = *shapes[i];
-        if (shape.isResting()) continue;
+        if (shape.isResting() || shape.isKinematic()) continue;
         const std::size_t island = root(i);
         if (island_label_[island] == 0) island_label_[island] = next_label_++;
         shape.joinIsland(island_label_[island]);
@@ -140,7 +144,7 @@ void Islands::wakeIslandOf(ShapeList shapes, std::size_t index, RestTimer timer)
     if (index >= shapes.size()) return;
     ++wake_count_;
     RigidShape& shape = *shapes[index];
-    if (shape.isStatic()) return wakeAll(shapes);
+    if (!shape.isDynamic()) return wakeAll(shapes);  // static or kinematic
     wakeLabel(shapes, shape.sleep().island, timer);
     shape.wake(timer);
 }

@@ -34,6 +34,10 @@
 // shape wakes it and its island; anything done to a static shape, and any change of the
 // world's settings, wakes everything (core.h): which islands lean on a platform is
 // exactly what the step no longer looks at.
+//
+// 5.9's kinematic bodies join no island, as static ones, and never sleep; a shape that
+// touches one while it moves does not rest (a box on a moving platform never sleeps),
+// and a kinematic body that stands still rests as a static one does.
 
 #include <cstddef>
 #include <cstdint>
@@ -83,6 +87,7 @@ private:
     std::vector<std::size_t> parent_;          // union-find over the step's contacts
     std::vector<double> deepest_;              // px, each shape's deepest overlap this step
     std::vector<std::uint8_t> held_;           // 1: the shape touches something
+    std::vector<std::uint8_t> carried_;        // 1: it touches a moving kinematic body (5.9)
     std::vector<double> island_rested_;        // s, per root: the shortest rest in the island
     std::vector<std::uint64_t> island_label_;  // per root: the island's name this step
     std::uint64_t next_label_ = 1;             // 0 is a new shape's, before its first step

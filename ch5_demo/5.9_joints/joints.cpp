@@ -19,8 +19,8 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 constexpr double kShortestLink = 1e-9;  // px
 
 // A point fixed in a body's frame, turned as the body is now.
-Vec2 turned(Vec2 local, double angle) { return local.rotate({}, angle); }
-Vec2 unturned(Vec2 world, double angle) { return world.rotate({}, -angle); }
+Vec2 toWorld(Vec2 local, double angle) { return local.rotate({}, angle); }
+Vec2 toBody(Vec2 world, double angle) { return world.rotate({}, -angle); }
 
 // The velocity a spin w gives a point at arm r from the centre: w x r.
 Vec2 spinAt(double w, Vec2 arm) { return {-w * arm.y, w * arm.x}; }
@@ -34,15 +34,15 @@ struct Frame {
 
 Frame frameOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
     Frame frame;
-    frame.arm_a = turned(joint.local_a, a.angle());
-    frame.arm_b = turned(joint.local_b, b.angle());
+    frame.arm_a = toWorld(joint.local_a, a.angle());
+    frame.arm_b = toWorld(joint.local_b, b.angle());
     frame.gap = (b.center() + frame.arm_b) - (a.center() + frame.arm_a);
     frame.angle = b.angle() - a.angle() - joint.reference_angle;
     return frame;
 }
 
 // A slider's axis as a's turn has carried it, and the direction across it.
-Vec2 axisOf(const JointDefinition& joint, const RigidShape& a) { return turned(joint.local_axis, a.angle()); }
+Vec2 axisOf(const JointDefinition& joint, const RigidShape& a) { return toWorld(joint.local_axis, a.angle()); }
 Vec2 across(Vec2 axis) { return {-axis.y, axis.x}; }
 
 // A pair of bodies as the joints keep them apart: the smaller id first.
@@ -68,8 +68,8 @@ JointDefinition pinAt(JointType type, const RigidShape& a, const RigidShape& b, 
     joint.type = type;
     joint.body_a = a.id();
     joint.body_b = b.id();
-    joint.local_a = unturned(anchor - a.center(), a.angle());
-    joint.local_b = unturned(anchor - b.center(), b.angle());
+    joint.local_a = toBody(anchor - a.center(), a.angle());
+    joint.local_b = toBody(anchor - b.center(), b.angle());
     joint.reference_angle = b.angle() - a.angle();
     return joint;
 }
@@ -79,15 +79,15 @@ JointDefinition linkBetween(const RigidShape& a, const RigidShape& b, std::pair<
     joint.type = JointType::distance;
     joint.body_a = a.id();
     joint.body_b = b.id();
-    joint.local_a = unturned(anchors.first - a.center(), a.angle());
-    joint.local_b = unturned(anchors.second - b.center(), b.angle());
+    joint.local_a = toBody(anchors.first - a.center(), a.angle());
+    joint.local_b = toBody(anchors.second - b.center(), b.angle());
     joint.reference_angle = b.angle() - a.angle();
     joint.length = anchors.first.distance(anchors.second);
     return joint;
 }
 
 std::pair<Vec2, Vec2> anchorsOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
-    return {a.center() + turned(joint.local_a, a.angle()), b.center() + turned(joint.local_b, b.angle())};
+    return {a.center() + toWorld(joint.local_a, a.angle()), b.center() + toWorld(joint.local_b, b.angle())};
 }
 
 double positionOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {

@@ -73,6 +73,15 @@ public:
     }
     void onKeyDown(browser::Key key) override { control_.onKeyDown(key); }
     void onAnimationFrame() override { core_.runGameLoop(); }
+    // 5.9: the mouse grabs, drags and lets go of a shape (mouse_joint.h).
+    void onPointer(const browser::PointerEvent& event) override {
+        const engine::Vec2 point{static_cast<double>(event.point.x), static_cast<double>(event.point.y)};
+        switch (event.kind) {
+            case browser::PointerEvent::Kind::press: core_.grab(point); break;
+            case browser::PointerEvent::Kind::move: core_.dragTo(point); break;
+            case browser::PointerEvent::Kind::release: core_.letGo(); break;
+        }
+    }
     browser::PageWorld world() override { return engine::pageWorld(core_); }
 
 private:

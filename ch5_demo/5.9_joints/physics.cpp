@@ -179,6 +179,9 @@ void Physics::collision(ShapeList shapes, const WorldSettings& world) {
             // even tested. Nothing draws the record from 4.3 on: it keeps the pairs the
             // resolution works on, for the tests, and leaves such a pair out.
             if (a.isResting() && b.isResting()) return false;
+            // 5.9: nor a kinematic shape and a static or kinematic one, both of infinite
+            // mass: nothing could move either.
+            if (!a.isDynamic() && !b.isDynamic()) return false;
             const std::optional<CollisionInfo> info = narrowPhase(a, b);
             if (!info) return false;
             // A sensor only tells what overlaps it (rigid_shape.h): no response, no island.

@@ -75,8 +75,8 @@ void RigidShape::update(const WorldSettings& world) {
     const double dt = world.dt;
     const bool symplectic = world.integrator == Integrator::symplectic;
     // F = m a with gravity's force m g gives a = g for every mass; a static body has no
-    // acceleration at all.
-    const Vec2 acceleration = isStatic() ? Vec2{} : world.gravity;
+    // acceleration at all, and a kinematic one (5.9) moves by its velocity alone.
+    const Vec2 acceleration = isDynamic() ? world.gravity : Vec2{};
     const Vec2 new_velocity = velocity_ + acceleration * dt;
     move((symplectic ? new_velocity : velocity_) * dt);
     velocity_ = new_velocity;
@@ -87,6 +87,7 @@ void RigidShape::update(const WorldSettings& world) {
 }
 
 void RigidShape::updateMass(double delta) {
+    if (kinematic_) return;  // 5.9: infinite, whatever the keys say
     const double mass = this->mass() + delta;
     if (mass <= 0.0) {
         inv_mass_ = 0.0;
@@ -98,7 +99,13 @@ void RigidShape::updateMass(double delta) {
     updateInertia();
 }
 
-void RigidShape::updateInertia() { inv_inertia_ = isStatic() ? 0.0 : 1.0 / rotationalInertia(mass()); }
+void RigidShape::updateInertia() { inv_inertia_ = inv_mass_ == 0.0 ? 0.0 : 1.0 / rotationalInertia(mass()); }
+
+void RigidShape::makeKinematic() {
+    kinematic_ = true;
+    inv_mass_ = 0.0;
+    inv_inertia_ = 0.0;
+}
 
 // Falling asleep stops the shape dead: the little speed it rested with would otherwise
 // carry it on when it wakes, after any time asleep.

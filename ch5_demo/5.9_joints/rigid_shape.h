@@ -113,8 +113,8 @@ public:
     // The engine divides by mass far more often than it multiplies, so it keeps 1/m.
     // A static body's 1/m is 0: no impulse and no gravity changes its velocity.
     double invMass() const { return inv_mass_; }
-    bool isStatic() const { return inv_mass_ == 0.0; }
-    double mass() const { return isStatic() ? 0.0 : 1.0 / inv_mass_; }
+    bool isStatic() const { return inv_mass_ == 0.0 && !kinematic_; }
+    double mass() const { return inv_mass_ == 0.0 ? 0.0 : 1.0 / inv_mass_; }
     // Adds `delta` to the mass. A mass that drops to 0 or below makes the body static
     // and stops it dead; otherwise 1/m is stored again. Either way the rotational
     // inertia follows the new mass.
@@ -122,9 +122,22 @@ public:
     // 1/I, the rotational counterpart of 1/m; 0 for a static body.
     double invInertia() const { return inv_inertia_; }
 
+    // 5.9: a kinematic body (a moving platform, a turntable) moves by its velocity and
+    // angular velocity and by nothing else. Its mass is infinite, 1/m = 1/I = 0, as a
+    // static body's: no impulse and no gravity changes how it moves (the velocity keys
+    // do), and it pushes whatever is in its way. Unlike a static body it moves, so what rests on it
+    // is carried by friction (README.md, "Kinematic bodies"). isDynamic(): the
+    // shapes that forces and impulses move, neither static nor kinematic.
+    bool isKinematic() const { return kinematic_; }
+    void makeKinematic();
+    bool isDynamic() const { return inv_mass_ != 0.0; }
+
     // A sleeping shape stays where it is and at rest: no step moves it until it wakes.
     const SleepState& sleep() const { return sleep_; }
-    bool isResting() const { return isStatic() || sleep_.asleep; }
+    // A kinematic body that stands still rests as a static one does (5.9).
+    bool isResting() const {
+        return isStatic() || sleep_.asleep || (kinematic_ && velocity_ == Vec2{} && angular_velocity_ == 0.0);
+    }
     void fallAsleep(std::uint64_t island);
     // Wakes the shape. Its rest starts again from 0 when something changed it or its
     // world (a key, a removal, a setting); it goes on where it stopped when an awake
@@ -200,6 +213,7 @@ protected:
     SleepState sleep_;
     bool bullet_ = false;
     bool sensor_ = false;
+    bool kinematic_ = false;
 };
 
 // The world's shapes, as the core keeps them and the physics and its broad phase walk

@@ -3,6 +3,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "circle.h"
 #include "convex_hull.h"
@@ -180,6 +182,15 @@ void checkJoints(const Scene& scene, std::string_view source) {
     }
 }
 
+// 5.9: what a kinematic body cannot be at once. Mass 0 says static, which does not move
+// at all; a bullet is swept to its impacts, which never stop a kinematic body.
+std::optional<std::string> kinematicRefusal(const BodyDescription& body) {
+    if (!body.kinematic) return std::nullopt;
+    if (body.mass == 0.0) return "kinematic and static (mass 0) at once: a kinematic body moves by its velocity";
+    if (body.bullet) return "kinematic and a bullet at once: nothing stops a kinematic body, so it is never swept";
+    return std::nullopt;
+}
+
 RigidShape& addBody(Core& core, const BodyDescription& body) {
     const PhysicalAttributes attributes{.mass = body.mass, .friction = body.friction, .restitution = body.restitution};
     switch (body.shape) {
@@ -256,7 +267,8 @@ std::vector<browser::SceneKey> bodyKeys(BodyDescription& body) {
                              {"velocity", body.velocity, kSpeed},
                              {"angular_velocity", body.angular_velocity, kTurnRate},
                              {"bullet", body.bullet},
-                             {"sensor", body.sensor}});
+                             {"sensor", body.sensor},
+                             {"kinematic", body.kinematic}});
     return keys;
 }
 
@@ -336,6 +348,11 @@ Scene readScene(const std::string& text, std::string_view source) {
     const std::array<browser::SceneList, 2> lists{bodyList(scene.bodies), jointList(scene.joints)};
     browser::read_scene_text(text, source, worldKeys(scene.world), lists);
     checkJoints(scene, source);
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        if (const std::optional<std::string> problem = kinematicRefusal(scene.bodies[i])) {
+            throw browser::SceneError(std::string(source) + ": bodies[" + std::to_string(i) + "]: " + *problem);
+        }
+    }
     return scene;
 }
 
@@ -354,6 +371,7 @@ void buildScene(Core& core, const std::vector<BodyDescription>& bodies) {
         shape.setAngularVelocity(body.angular_velocity);
         shape.setBullet(body.bullet);
         shape.setSensor(body.sensor);
+        if (body.kinematic) shape.makeKinematic();
     }
 }
 

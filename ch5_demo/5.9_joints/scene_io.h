@@ -40,6 +40,9 @@ struct BodyDescription {
     bool bullet = false;
     // A sensor feels overlaps and tells them as events, with no response (contact_events.h).
     bool sensor = false;
+    // 5.9: a kinematic body moves by its velocity and angular velocity alone, with
+    // infinite mass (rigid_shape.h). Refused with mass 0 (static) or as a bullet.
+    bool kinematic = false;
 
     friend bool operator==(const BodyDescription&, const BodyDescription&) = default;
 };
@@ -100,7 +103,7 @@ inline constexpr browser::SceneFiles<Scene> kSceneFiles{.load = loadScene, .canv
 // place of the book's MyGame scene. Each is built as the book builds a shape, then
 // turned with rotate(angle) and set moving with its velocity and angular velocity; a
 // body with "bullet": true becomes a bullet (continuous.h), one with "sensor": true a
-// sensor (rigid_shape.h).
+// sensor (rigid_shape.h), one with "kinematic": true kinematic (rigid_shape.h).
 void buildScene(Core& core, const std::vector<BodyDescription>& bodies);
 // 5.9: the bodies, then the joints between them (joints.h), each anchored where the
 // bodies stand once built and turned.

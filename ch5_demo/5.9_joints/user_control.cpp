@@ -111,7 +111,7 @@ void UserControl::selectedObjectKeys(browser::Key key, RigidShape& selected) {
 void UserControl::exciteAll() {
     for (std::size_t i = 0; i < core_.objectCount(); ++i) {
         RigidShape& shape = core_.object(i);
-        if (shape.isStatic()) continue;
+        if (!shape.isDynamic()) continue;  // nor a kinematic shape (5.9): it keeps its course
         shape.setVelocity(randomVelocity(kExciteSpeed));
     }
 }

@@ -160,7 +160,9 @@ TEST_CASE("live program: a bad events file is one line and status 1, with nothin
     folder.write("events.txt", "F@0");
     const Run live = run_in(folder, program() + " --live --record s.keys --live-events events.txt");
     CHECK(live.status == 1);
-    CHECK(live.err == "--live-events: bad token \"F@0\" (NAME@REFRESH, NAME an SDL key name or close)\n");
+    CHECK(live.err ==
+          "--live-events: bad token \"F@0\" (NAME@REFRESH, NAME an SDL key name, close, or press:X,Y, move:X,Y, "
+          "release:X,Y)\n");
     CHECK(folder.files() == std::vector<std::string>{"events.txt"});
 }
 

@@ -13,35 +13,7 @@
 set -euo pipefail
 program=$1 compare_png=$2 has_window=$3
 
-if [[ "$has_window" != yes ]]; then
-  echo "SKIPPED: this build has no live window (SDL2); live.program checks that --live says so"
-  exit 77
-fi
-for tool in Xvfb xdotool; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "SKIPPED: $tool is not installed (tools/setup installs xvfb and xdotool)"
-    exit 77
-  fi
-done
-
-work=$(mktemp -d)
-xvfb_pid='' live_pid=''
-cleanup() {
-  if [[ -n "$live_pid" ]]; then kill "$live_pid" 2>/dev/null || true; fi
-  if [[ -n "$xvfb_pid" ]]; then kill "$xvfb_pid" 2>/dev/null || true; fi
-  rm -rf "$work"
-}
-trap cleanup EXIT
-fail() { echo "FAILED: $*"; for f in "$work"/*.txt; do [[ -f "$f" ]] && { echo "--- $(basename "$f")"; cat "$f"; }; done; exit 1; }
-
-# Xvfb picks a free display number and writes it to file descriptor 3 once it is ready.
-Xvfb -displayfd 3 -screen 0 1400x600x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.txt" &
-xvfb_pid=$!
-for _ in $(seq 100); do [[ -s "$work/display" ]] && break; sleep 0.1; done
-[[ -s "$work/display" ]] || fail "Xvfb did not start"
-export DISPLAY=":$(cat "$work/display")"
-
-cd "$work"
+source "$(dirname "$0")/xvfb_display.sh"
 # In the sanitizer build (.ci/run) leak checking is off for this one run: under X11,
 # SDL's system libraries leave about 1 KB behind at exit (libdbus, and libraries SDL
 # loads and unloads itself, so LeakSanitizer cannot even name them). The same session

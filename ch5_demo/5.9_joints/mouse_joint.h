@@ -1,0 +1,74 @@
+#pragma once
+// The mouse joint (not in the book: every engine's testbed has one, and the book teaches
+// by play). A press on a shape that moves grabs it at the point pressed; while the
+// button is held, a soft point constraint pulls that point of the shape toward the
+// pointer; the release lets it go. The shape is pulled, not placed: it still collides,
+// turns about the grabbed point, and can be held back by what it is stuck under.
+//
+// Soft, as in Erin Catto's "Soft Constraints" (GDC 2011), and derived in README.md ("The
+// mouse"): the constraint C = p - target (p the grabbed point, px) is made to behave as
+// a spring of frequency kHertz and damping ratio kDampingRatio on the shape's own mass,
+// solved implicitly, so it cannot blow up however stiff. Per step h, with m the shape's
+// mass, w = 2 pi kHertz, k = m w^2 and c = 2 m kDampingRatio w:
+//     gamma = 1 / (h (c + h k)),  beta = h k / (c + h k)
+//     impulse P = -(K + gamma 1)^-1 (v_p + beta C / h),   |P| <= kMaxPullAcceleration m h
+// where v_p is the grabbed point's velocity and K the 2 x 2 matrix of how a unit impulse
+// at the point changes v_p (1/m and the turning r x P / I). The pull is capped at a force
+// in proportion to the mass, so a drag lifts a shape and what rests on it briskly but
+// cannot fling a pile through the floor.
+//
+// Where it acts: once each (sub-)step, before the collisions, as a force would (the
+// book's order adds gravity after them; the pull goes in first, so both solvers then
+// see it as part of the velocity they correct). Solved alone it is exact for the shape
+// by itself; the contacts then have the last word, as they should: a shape dragged into
+// the floor stops at the floor. The same in the book's passes and in the sequential
+// impulses: it never enters their loops (README.md says why that is enough here).
+
+#include <optional>
+
+#include "canvas.h"
+#include "rigid_shape.h"
+#include "world_settings.h"
+
+namespace engine {
+
+class MouseJoint {
+public:
+    // The testbeds' softness: a pull that settles in about a fifth of a second, barely
+    // overshooting.
+    static constexpr double kHertz = 5.0;
+    static constexpr double kDampingRatio = 0.7;
+    // The most the pull may accelerate the shape by, px/s^2. Box2D's testbed allows
+    // 1000 m/s^2 in a world some 40 m across: 25 widths a second squared, which on the
+    // book's 800 px canvas is 20,000 px/s^2 (1000 times the book's gravity). Less, and a
+    // drag across the canvas overshoots: the cap that speeds the shape up also limits
+    // how hard the spring can stop it at the pointer.
+    static constexpr double kMaxPullAcceleration = 20000.0;
+
+    // Grabs the shape at `point` that forces move (not a static or kinematic one), the
+    // one drawn last where several overlap there; returns its place in the list, or
+    // nothing when there is none.
+    std::optional<std::size_t> grab(ShapeList shapes, Vec2 point);
+    void moveTo(Vec2 target) { target_ = target; }
+    void release() { body_ = 0; }
+    bool holding() const { return body_ != 0; }
+    BodyId body() const { return body_; }
+    Vec2 target() const { return target_; }
+    // The grabbed point where it is now, on the shape `shape` (the grabbed one).
+    Vec2 grabbedPoint(const RigidShape& shape) const;
+
+    // One (sub-)step's pull, before the collisions: changes the grabbed shape's velocity
+    // and angular velocity. Lets go when the shape has left the world; does nothing to
+    // a sleeping shape (the pointer's moves wake it, core.cpp).
+    void apply(ShapeList shapes, const WorldSettings& world);
+
+    // A line from the grabbed point to the pointer, and a dot at each end.
+    void draw(browser::Canvas& context, ShapeList shapes) const;
+
+private:
+    BodyId body_ = 0;    // 0: nothing held
+    Vec2 local_anchor_;  // the grabbed point in the shape's frame: px from its centre, unturned
+    Vec2 target_;        // where the pointer is, px
+};
+
+}  // namespace engine
