@@ -36,6 +36,7 @@ std::string_view kindName(EventKind kind) {
         case EventKind::begin: return "begin";
         case EventKind::end: return "end";
         case EventKind::hit: return "hit";
+        case EventKind::limit: return "limit";
     }
     return "?";
 }
@@ -229,6 +230,22 @@ void ContactEvents::endStep(ShapeList shapes, double hit_speed) {
     }
     while (!recent_.empty() && recent_.front().step <= step_ - kShownSteps) recent_.pop_front();
     recent_.insert(recent_.end(), events_.begin(), events_.end());
+}
+
+void ContactEvents::limitReached(BodyId a, BodyId b, Vec2 point, Vec2 normal, double speed) {
+    if (!kept()) return;
+    // Named as a pair is, smaller id first, the normal still pointing from a to b.
+    if (b < a) {
+        std::swap(a, b);
+        normal = normal * -1.0;
+    }
+    events_.push_back({.step = step_,
+                       .kind = EventKind::limit,
+                       .id_a = a,
+                       .id_b = b,
+                       .point = point,
+                       .normal = normal,
+                       .speed = speed});
 }
 
 void ContactEvents::shapeLeaves(BodyId id) {

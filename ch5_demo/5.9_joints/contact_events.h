@@ -55,7 +55,10 @@ inline constexpr int kMissedSteps = 3;
 // steps, long enough to see, short enough not to pile up.
 inline constexpr long kShownSteps = 30;
 
-enum class EventKind { begin, end, hit };
+// 5.9 adds `limit`: a joint's limit (a revolute's angle, a slider's translation, a
+// rope's length) began to hold it, told once when it arrives, as a begin is, not in each
+// step it stays there (joints.h, Joints::reportLimits).
+enum class EventKind { begin, end, hit, limit };
 
 // Who reads the events: each turns them on and off for itself, and they are kept while
 // any one of them reads (the overlay going off must not silence the --events file).
@@ -70,6 +73,10 @@ struct ContactEvent {
     Vec2 point;          // the middle of the overlap (an end: where the pair last touched)
     Vec2 normal;         // from a to b
     double speed = 0.0;  // px/s, how fast the pair's surfaces met along the normal (hits only)
+    // A limit (5.9): the pair is the joint's two bodies, the point b's anchor (the pin of
+    // a revolute), the normal the way the limit pushes the larger id's body ((0, 0) for
+    // an angle), the speed how fast the joint was closing on the limit at the step's
+    // start: px/s for a slider or a rope, rad/s for an angle.
 };
 
 class ContactEvents {
@@ -95,6 +102,9 @@ public:
     // at the step's end finds it.
     void crossed(const RigidShape& mover, const RigidShape& sensor, Vec2 point, Vec2 direction);
     void endStep(ShapeList shapes, double hit_speed);
+    // 5.9: a joint's limit began to hold in this step (joints.h): the joint's bodies,
+    // b's anchor, the way the limit pushes b, and the speed it closed at (above).
+    void limitReached(BodyId a, BodyId b, Vec2 point, Vec2 normal, double speed);
 
     // A key took the shape out of its contacts (removed it, made it static, moved it):
     // each pair it touched ends now. If it still touches, the next step begins it anew.

@@ -53,6 +53,7 @@ void drawEvents(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
                              draw::fixed(event.speed, 0) + " px/s");
                 ++hits;
                 break;
+            case EventKind::limit: break;  // 5.9: the joints' layer draws each limit
         }
     }
     for (std::size_t i = 0; i < core.objectCount(); ++i) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "contact_events.h"
 #include "contact_solver.h"
 #include "islands.h"
 
@@ -213,6 +214,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         // limit within this step (it may close the gap C, no more): a speculative limit,
         // which never pulls. Past the limit it pushes back as softly as an equation.
         const auto limit = [&](Row made, double error) {
+            made.approach = -(made.direction.dot(body_b.velocity.linear - body_a.velocity.linear) +
+                              made.turn_b * body_b.velocity.angular - made.turn_a * body_a.velocity.angular);
             if (error > 0.0) {
                 made.bias = error / world.dt;
             } else {
@@ -363,6 +366,26 @@ void Joints::solve(std::vector<SolverBody>& bodies) {
         const Vec2 impulse = solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
         pushPin(a, b, pin.arm_a, pin.arm_b, impulse);
         totals.point += impulse;
+    }
+}
+
+void Joints::reportLimits(ShapeList shapes, ContactEvents& events) {
+    for (const Prepared& prepared : prepared_) {
+        Joint& joint = joints_[prepared.joint];
+        for (std::size_t r = 0; r < prepared.row_count; ++r) {
+            const Row& row = prepared.rows[r];
+            const bool lower = row.total == &JointImpulses::lower;
+            if (!lower && row.total != &JointImpulses::upper) continue;
+            bool& was = lower ? joint.at_lower : joint.at_upper;
+            const bool holds = joint.impulses.*row.total > 0.0;
+            if (holds && !was) {
+                const RigidShape& a = *shapes[prepared.a];
+                const RigidShape& b = *shapes[prepared.b];
+                events.limitReached(a.id(), b.id(), anchorsOf(joint.definition, a, b).second, row.direction,
+                                    row.approach);
+            }
+            was = holds;
+        }
     }
 }
 

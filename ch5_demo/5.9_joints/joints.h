@@ -37,6 +37,7 @@ namespace engine {
 
 struct SolverBody;  // contact_solver.h: a body's velocities as the solver works on them
 class Islands;
+class ContactEvents;
 
 enum class JointType { revolute, distance, weld, prismatic };
 
@@ -95,6 +96,10 @@ struct JointImpulses {
 struct Joint {
     JointDefinition definition;
     JointImpulses impulses;
+    // Whether each side of its limit held it in the last step that solved it while
+    // events were kept: a limit event is told when one turns true (Joints::reportLimits).
+    bool at_lower = false;
+    bool at_upper = false;
 };
 
 // The joint that holds `a` and `b` at the world point `anchor` (revolute, weld; a
@@ -142,6 +147,10 @@ public:
     void prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world);
     void warmStart(std::vector<SolverBody>& bodies) const;
     void solve(std::vector<SolverBody>& bodies);
+    // After the iterations, only while someone reads events: a limit event for each
+    // side of a limit that holds now (its total impulse > 0: it stopped the joint from
+    // passing within this step) and did not in the step before. Velocities untouched.
+    void reportLimits(ShapeList shapes, ContactEvents& events);
     // After the shapes have moved: world.position_iterations passes that move and turn
     // the bodies themselves until each rigid joint's anchors meet again (Box2D 2.4's
     // last step for its joints), with positional correction on. A soft constraint pulls
@@ -164,6 +173,7 @@ private:
         double turn_b = 0.0;
         double mass = 0.0;          // effective mass: 1 / (the speed a unit impulse makes)
         double target_speed = 0.0;  // a motor's; 0 for the rest
+        double approach = 0.0;      // a limit's: how fast the joint closed on it at the step's start (-Cdot)
         double bias = 0.0;          // the speed asked for to undo the error, bias_rate * C
         double mass_scale = 1.0;
         double impulse_scale = 0.0;

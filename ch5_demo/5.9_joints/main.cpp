@@ -31,7 +31,7 @@ const browser::StageDefaults kStage{
     .every = 60,
     .gif = true,
     .extra_options = {{std::string(engine::kEventsOption), "FILE",
-                       "write every collision event (begin, end, hit) to this CSV file: step,kind,id_a,id_b,x,y,nx,ny,speed", ""}},
+                       "write every collision event (begin, end, hit) and joint limit reached (limit) to this CSV file: step,kind,id_a,id_b,x,y,nx,ny,speed", ""}},
     // Every key user_control.cpp reacts to, as the README lists them.
     .key_help = {
         {"0-9 up down", "select an object: by its number, the one before, the one after"},

@@ -10,7 +10,8 @@
 namespace engine {
 
 // The option that writes every collision event to a CSV file (5.7), a line each:
-// step,kind,id_a,id_b,x,y,nx,ny,speed.
+// step,kind,id_a,id_b,x,y,nx,ny,speed. 5.9 adds the kind `limit`, a joint's limit
+// reached (contact_events.h says what its columns hold).
 inline constexpr std::string_view kEventsOption = "--events";
 
 browser::PageWorld pageWorld(Core& core);

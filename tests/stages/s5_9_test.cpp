@@ -3,8 +3,8 @@
 // end, a bridge of 50 planks under a box 100 times a plank's mass and a 30 x 30 grid of
 // pins hold together within stated bounds; each kind of joint does what it says (a
 // revolute's limit and motor, a rope's slack, a spring's frequency, a weld, a slider);
-// two bodies joined do not collide, and sleep and wake as one island; bad joints are
-// refused in one line. A scene with no joint runs as on 5.8, bit for bit: 5.8's stage
+// two bodies joined do not collide, and sleep and wake as one island; a limit reached is
+// told once as a `limit` event (a pendulum's, a rope's); bad joints are refused in one line. A scene with no joint runs as on 5.8, bit for bit: 5.8's stage
 // tests run here (s5_9.s5_8_stage), and so does the identity feature test.
 #include <catch2/catch.hpp>
 
@@ -444,6 +444,132 @@ TEST_CASE("s5_9: a revolute joint's limit holds its angle, and its motor turns a
     limited.steps(120);
     CHECK(arm2.angle() == Approx(0.5).margin(0.01));
     CHECK(std::abs(arm2.angularVelocity()) < 0.05);
+}
+
+namespace {
+
+// Steps the page `steps` times and returns the limit events told, in order.
+std::vector<engine::ContactEvent> limitEvents(test::WorldFixture& page, int steps) {
+    std::vector<engine::ContactEvent> told;
+    for (int i = 0; i < steps; ++i) {
+        page.steps(1);
+        for (const engine::ContactEvent& event : page.core.events().events()) {
+            if (event.kind == engine::EventKind::limit) told.push_back(event);
+        }
+    }
+    return told;
+}
+
+}  // namespace
+
+TEST_CASE("s5_9: a pendulum reaching its limit is told once, at the step and speed energy predicts") {
+    // A disc of radius r = 10 px on a pin L = 150 px away, level with it, released from
+    // rest: the joint's angle phi is the arm's turn from level (y down: toward the
+    // bottom), and the limit stops it at 3 pi / 4, 45 degrees past the bottom. Energy
+    // gives the spin at phi: (1/2) I_pin w^2 = m g L sin(phi), I_pin = m (r^2 / 2 + L^2),
+    // so w^2 = c sin(phi), c = 2 g L / (r^2 / 2 + L^2); and the time to reach the limit
+    // is the integral of dphi / w, worked out here by Simpson's rule in u = sqrt(phi)
+    // (dphi = 2 u du takes away the 1 / sqrt(phi) at the start).
+    constexpr double kRadius = 10.0, kArm = 150.0, kLimit = 3.0 * kPi / 4.0;
+    const double c = 2.0 * kG * kArm / (kRadius * kRadius / 2.0 + kArm * kArm);
+    const auto integrand = [c](double u) {
+        return u == 0.0 ? 2.0 / std::sqrt(c) : 2.0 * u / std::sqrt(c * std::sin(u * u));
+    };
+    constexpr int kIntervals = 2000;
+    const double top = std::sqrt(kLimit), h = top / kIntervals;
+    double sum = integrand(0.0) + integrand(top);
+    for (int k = 1; k < kIntervals; ++k) sum += (k % 2 == 1 ? 4.0 : 2.0) * integrand(k * h);
+    const double arrival = sum * h / 3.0;  // s
+    const double arrival_spin = std::sqrt(c * std::sin(kLimit));
+    INFO("arrival " << arrival << " s, spin there " << arrival_spin << " rad/s");
+
+    const auto hang = [](test::WorldFixture& page) {
+        const engine::RigidShape& post = page.core.add(engine::Circle({300, 100}, 2, kStatic));
+        const engine::RigidShape& bob = page.core.add(engine::Circle({300 + kArm, 100}, kRadius));
+        engine::JointDefinition pin = engine::pinAt(engine::JointType::revolute, post, bob, {300, 100});
+        pin.limit = engine::JointRange{-1.0, kLimit};
+        page.core.join(pin);
+        return pin;
+    };
+    test::WorldFixture page(jointWorld());
+    const engine::JointDefinition pin = hang(page);
+    const engine::RigidShape& post = page.core.object(0);
+    const engine::RigidShape& bob = page.core.object(1);
+    page.core.keepEvents(true);
+    // Up to the swing back: after the stop the bob swings 45 degrees either side of the
+    // bottom, with period 2 pi sqrt(I_pin / (m g L)) (1 + a^2 / 16) = 4.6 s at a = pi / 4,
+    // so it cannot come back to the limit within 2 s of the stop.
+    const int steps = static_cast<int>(std::ceil(arrival * 60.0)) + 120;
+    const std::vector<engine::ContactEvent> told = limitEvents(page, steps);
+    REQUIRE(told.size() == 1);
+    const engine::ContactEvent& hit = told.front();
+    // The limit holds in the step whose motion would carry the arm past it: the step
+    // that ends after the arrival, within two either way for the semi-implicit Euler.
+    CHECK(std::abs(static_cast<double>(hit.step) - arrival * 60.0) <= 2.0);
+    CHECK(hit.id_a == post.id());
+    CHECK(hit.id_b == bob.id());
+    CHECK(hit.point.distance({300, 100}) < 0.5);  // the pin
+    CHECK(hit.normal.x == 0.0);                   // an angle has no direction
+    CHECK(hit.normal.y == 0.0);
+    // The spin at the step's start, a step short of the limit: within 5 % of energy's.
+    CHECK(hit.speed == Approx(arrival_spin).epsilon(0.05));
+    // Stopped at the limit and let go: gravity takes it back from there.
+    CHECK(engine::positionOf(pin, post, bob) < kLimit);
+
+    // It bounces off the limit a little (the limit's row and the pin's share the stop
+    // between them), swings to the other side and comes back: each arrival is told once,
+    // slower than the one before (the limit takes energy, never gives it), never faster
+    // than the bottom's sqrt(c), and no sooner than the arm can swing from the limit to
+    // the bottom and back, pi / 2 rad at that speed (0.79 s, 48 steps).
+    std::vector<engine::ContactEvent> swings = limitEvents(page, 20 * 60 - steps);
+    swings.insert(swings.begin(), hit);
+    CHECK(swings.size() >= 4);
+    const double fastest = std::sqrt(c);
+    for (std::size_t k = 1; k < swings.size(); ++k) {
+        INFO("arrival " << k << " at step " << swings[k].step << ", " << swings[k].speed << " rad/s");
+        CHECK(swings[k].step - swings[k - 1].step >= static_cast<long>(std::ceil(kPi / 2.0 / fastest * 60.0)));
+        CHECK(swings[k].speed < swings[k - 1].speed);
+        CHECK(swings[k].speed > 0.0);
+        CHECK(swings[k].point.distance({300, 100}) < 0.5);
+    }
+
+    // Nobody reading: the same pendulum moves the same, to the bit.
+    test::WorldFixture deaf(jointWorld());
+    hang(deaf);
+    deaf.steps(20 * 60);
+    CHECK(deaf.core.object(1).center().x == bob.center().x);
+    CHECK(deaf.core.object(1).center().y == bob.center().y);
+    CHECK(deaf.core.object(1).angle() == bob.angle());
+    CHECK(deaf.core.object(1).angularVelocity() == bob.angularVelocity());
+}
+
+TEST_CASE("s5_9: a rope reaching its longest is told once, at the step free fall predicts") {
+    // A disc hung by a rope of range [10, 100] px from a post 50 px above it, released:
+    // it falls freely 50 px and the rope catches it. The solver's semi-implicit Euler
+    // (v += g dt, then y += v dt) has it fallen g dt^2 n (n + 1) / 2 after n steps
+    // (5 / 60 px a step's step): more than 50 px first at n = 35 (34 x 35 = 1190 < 1200
+    // <= 35 x 36), so the limit holds in step 35, closing at 35 g dt = 175 px/s.
+    test::WorldFixture page(jointWorld());
+    const engine::RigidShape& post = page.core.add(engine::Circle({300, 100}, 2, kStatic));
+    const engine::RigidShape& ball = page.core.add(engine::Circle({300, 150}, 8));
+    engine::JointDefinition rope = engine::linkBetween(post, ball, {{300, 100}, {300, 150}});
+    rope.length_range = engine::JointRange{10.0, 100.0};
+    page.core.join(rope);
+    page.core.keepEvents(true);
+    const std::vector<engine::ContactEvent> told = limitEvents(page, 180);
+    // Caught and hanging, the rope stays at its longest: one event, not one a step.
+    REQUIRE(told.size() == 1);
+    const engine::ContactEvent& caught = told.front();
+    CHECK(caught.step == 35);
+    CHECK(caught.id_a == post.id());
+    CHECK(caught.id_b == ball.id());
+    CHECK(caught.speed == Approx(175.0).epsilon(1e-9));
+    // The rope pulls the ball up: from the post to the ball is (0, 1), the limit's push (0, -1).
+    CHECK(caught.normal.x == Approx(0.0).margin(1e-12));
+    CHECK(caught.normal.y == Approx(-1.0).epsilon(1e-12));
+    // The ball's anchor (its centre) at the step's start: fallen 34 x 35 / 2 x 5/60 px.
+    CHECK(caught.point.y == Approx(150.0 + 34.0 * 35.0 / 2.0 * 5.0 / 60.0).epsilon(1e-9));
+    CHECK(ball.center().y == Approx(200.0).margin(0.5));
 }
 
 TEST_CASE("s5_9: a spring of f hertz bounces at f; a weld holds; a slider moves along its axis only") {

@@ -2,12 +2,17 @@
 // bodies"), in both solvers: a box carried by a moving platform takes its velocity, a
 // box on a turntable its tangential speed w x r, a kinematic pusher is not slowed by the
 // pile it pushes, a shape on a moving platform never sleeps and one on a stopped
-// platform does, and a bad combination is refused in one line.
+// platform does, a pendulum pinned to a moving one keeps its pin on it, and a bad
+// combination is refused in one line.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "circle.h"
+#include "joints.h"
+#include "rectangle.h"
 #include "scene_io.h"
 #include "world_fixture.h"
 
@@ -19,6 +24,9 @@ using engine::Vec2;
 namespace {
 
 constexpr int kStepsPerSecond = 60;
+
+// pendulums), the soft pin's lag plus the positional passes' remainder.
+constexpr double kKinematicPinBound = 1e-9;
 constexpr SolverKind kBothSolvers[] = {SolverKind::book, SolverKind::sequential_impulse};
 
 std::string solverName(SolverKind solver) { return solver == SolverKind::book ? "book" : "sequential_impulse"; }
@@ -227,6 +235,43 @@ TEST_CASE("s5_9: a kinematic body begins and ends contacts as any body does (5.7
         CHECK(world.body(1).velocity().x > 100.0);  // ahead of the paddle, and pulling away
         CHECK(world.body(0).velocity() == Vec2{100, 0});
     }
+}
+
+TEST_CASE("s5_9: a pendulum pinned to a kinematic body keeps its pin on it, and the body its velocity to the bit",
+          "[kinematic]") {
+    // A disc pinned 150 px below the centre of a kinematic plank that moves right at
+    // 60 px/s. The plank's inverse mass and inertia are 0, so no impulse of the pin
+    // reaches it: its velocity stays the scene's exactly, and only the disc answers the
+    // pin. In the plank's frame (inertial: its velocity is constant) the disc starts
+    // at 60 px/s backwards and swings; the pin must hold as on a static post.
+    engine::WorldSettings world = engine::kBookWorld;
+    world.solver = SolverKind::sequential_impulse;
+    world.gravity = {0, 300};
+    world.remove_out_of_bounds = false;
+    world.sleep = false;
+    test::WorldFixture page(world);
+    engine::RigidShape& plank = page.core.add(engine::Rectangle({200, 100}, 100, 10));
+    plank.makeKinematic();
+    plank.setVelocity({60, 0});
+    const engine::RigidShape& disc = page.core.add(engine::Circle({200, 250}, 10));
+    const engine::JointDefinition pin = engine::pinAt(engine::JointType::revolute, plank, disc, {200, 100});
+    page.core.join(pin);
+    double widest = 0.0;
+    for (int step = 1; step <= 4 * kStepsPerSecond; ++step) {
+        page.steps(1);
+        REQUIRE(plank.velocity().x == 60.0);
+        REQUIRE(plank.velocity().y == 0.0);
+        REQUIRE(plank.angularVelocity() == 0.0);
+        REQUIRE(plank.angle() == 0.0);
+        widest = std::max(widest, engine::separationOf(pin, plank, disc));
+    }
+    INFO("the widest the pin opened: " << widest << " px");
+    CHECK(widest < kKinematicPinBound);
+    // The plank went where its velocity took it, 4 s at 60 px/s, and no further.
+    CHECK(plank.center().x == Approx(440.0).epsilon(1e-12));
+    CHECK(plank.center().y == 100.0);
+    // And the disc went with it: hanging on the pin, within the arm's reach of it.
+    CHECK(disc.center().distance(plank.center()) == Approx(150.0).margin(kKinematicPinBound));
 }
 
 TEST_CASE("s5_9: a kinematic body that is also static or a bullet is refused in one line", "[kinematic]") {
