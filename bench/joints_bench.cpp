@@ -5,7 +5,13 @@
 // cost of a step (ms, the median of the run's steps) against what the joints let go:
 // the largest gap at any pin over the run, and the most the chain grew (the gaps
 // summed), px. A point further down and to the left is better on both.
-//   build/joints_bench              the tables (15 s of one core)
+//
+// The chain and the bridge are swept over iteration counts: their fronts. A point is
+// beaten when the other engine has one both cheaper and tighter (a smaller ms a step
+// and a smaller largest gap); the last column names the cheapest such point. Each of
+// their runs is timed three times and the fastest median kept (the gaps are the same to
+// the bit each time), so that another process on the machine moves the figures less.
+//   build/joints_bench              the tables (about 20 s of one core)
 //   BOX_MASS=30 build/joints_bench  the bridge's box of another mass (planks are 1)
 //   NO_BOX=1 build/joints_bench     the bridge with nothing on it
 #include <algorithm>
@@ -16,7 +22,7 @@
 #include <optional>
 #include <memory>
 #include <numbers>
-#include <string_view>
+#include <string>
 #include <vector>
 
 #include "browser.h"
@@ -262,9 +268,58 @@ Result runBox2d(const JointScene& scene, int iterations) {
 }
 #endif
 
-void print(std::string_view engine_name, int iterations, const Result& result) {
-    std::printf("| %-18.*s | %10d | %8.3f | %15.2f | %15.2f |\n", static_cast<int>(engine_name.size()),
-                engine_name.data(), iterations, result.ms_per_step, result.largest_gap, result.most_added);
+// One point of a front: an engine at a number of iterations, and what it gave.
+struct Point {
+    std::string engine;
+    int iterations = 0;
+    Result result;
+};
+
+// The run timed `repeats` times, the fastest median kept: the gaps are the same each time.
+template <typename Run>
+Result fastestOf(int repeats, Run run) {
+    Result best = run();
+    for (int r = 1; r < repeats; ++r) best.ms_per_step = std::min(best.ms_per_step, run().ms_per_step);
+    return best;
+}
+
+bool sameEngine(const Point& one, const Point& other) {
+    return one.engine.starts_with("5.9") == other.engine.starts_with("5.9");
+}
+
+// The cheapest point of the other engine both cheaper and tighter than `point`, if any.
+const Point* beatenBy(const Point& point, const std::vector<Point>& points) {
+    const Point* cheapest = nullptr;
+    for (const Point& other : points) {
+        if (sameEngine(point, other)) continue;
+        if (other.result.ms_per_step < point.result.ms_per_step &&
+            other.result.largest_gap < point.result.largest_gap &&
+            (!cheapest || other.result.ms_per_step < cheapest->result.ms_per_step))
+            cheapest = &other;
+    }
+    return cheapest;
+}
+
+void printTable(const std::vector<Point>& points) {
+    std::printf(
+        "| engine             | iterations | ms/step  | largest gap, px | most added, px  | beaten by          |\n");
+    std::printf(
+        "| ---                | ---        | ---      | ---             | ---             | ---                |\n");
+    for (const Point& point : points) {
+        char beaten[64] = "-";
+        if (const Point* other = beatenBy(point, points))
+            std::snprintf(beaten, sizeof beaten, "%s, %d", other->engine.c_str(), other->iterations);
+        std::printf("| %-18s | %10d | %8.3f | %15.2f | %15.2f | %-18s |\n", point.engine.c_str(), point.iterations,
+                    point.result.ms_per_step, point.result.largest_gap, point.result.most_added, beaten);
+    }
+    int stage_points = 0, stage_beaten = 0, box2d_points = 0, box2d_beaten = 0;
+    for (const Point& point : points) {
+        const bool stage = point.engine.starts_with("5.9");
+        (stage ? stage_points : box2d_points) += 1;
+        if (beatenBy(point, points)) (stage ? stage_beaten : box2d_beaten) += 1;
+    }
+    std::printf("\n5.9: %d of %d points beaten by Box2D 2.4; Box2D 2.4: %d of %d beaten by 5.9\n", stage_beaten,
+                stage_points, box2d_beaten, box2d_points);
 }
 
 }  // namespace
@@ -274,15 +329,35 @@ int main(int argc, char**) {
         std::fprintf(stderr, "joints_bench: takes no arguments\n");
         return 2;
     }
-    for (const JointScene& scene : {chain(), bridge(), grid()}) {
-        std::printf("\n%s, 10 s at 60 Hz\n\n", scene.name);
-        std::printf("| engine             | iterations | ms/step  | largest gap, px | most added, px  |\n");
-        std::printf("| ---                | ---        | ---      | ---             | ---             |\n");
-        for (const int iterations : {4, 8, 16, 32}) print("5.9", iterations, runStage(scene, iterations));
-        for (const int iterations : {4, 8}) print("5.9, 4 sub-steps", iterations, runStage(scene, iterations, 4));
+    // The chain and the bridge are cheap: a sweep, each run timed three times. The grid
+    // costs a second a run: a few points, once each.
+    struct Plan {
+        JointScene scene;
+        std::vector<int> iterations;
+        std::vector<int> substep_iterations;
+        int repeats;
+    };
+    const std::vector<int> sweep{4, 6, 8, 12, 16, 24, 32};
+    for (const Plan& plan :
+         {Plan{chain(), sweep, {4, 8}, 3}, Plan{bridge(), sweep, {4, 8}, 3}, Plan{grid(), {8, 16, 32}, {8}, 1}}) {
+        std::printf("\n%s, 10 s at 60 Hz\n\n", plan.scene.name);
+        std::vector<Point> points;
+        for (const int iterations : plan.iterations) {
+            points.push_back(
+                {"5.9", iterations, fastestOf(plan.repeats, [&] { return runStage(plan.scene, iterations); })});
+        }
+        for (const int iterations : plan.substep_iterations) {
+            points.push_back({"5.9, 4 sub-steps", iterations,
+                              fastestOf(plan.repeats, [&] { return runStage(plan.scene, iterations, 4); })});
+        }
 #if BENCH_HAS_BOX2D
-        for (const int iterations : {4, 8, 16, 32}) print("Box2D 2.4", iterations, runBox2d(scene, iterations));
-#else
+        for (const int iterations : plan.iterations) {
+            points.push_back(
+                {"Box2D 2.4", iterations, fastestOf(plan.repeats, [&] { return runBox2d(plan.scene, iterations); })});
+        }
+#endif
+        printTable(points);
+#if !BENCH_HAS_BOX2D
         std::printf("(Box2D 2.4 not found: no reference rows)\n");
 #endif
     }

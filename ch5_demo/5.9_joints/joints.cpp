@@ -33,12 +33,18 @@ struct Frame {
     double angle = 0.0;  // b's angle less a's, less the reference
 };
 
+// The joint's angle alone needs no sine or cosine: the positional passes ask for it
+// where they need nothing else, as they run a few times a step for every joint.
+double angleOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+    return b.angle() - a.angle() - joint.reference_angle;
+}
+
 Frame frameOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
     Frame frame;
     frame.arm_a = toWorld(joint.local_a, a.angle());
     frame.arm_b = toWorld(joint.local_b, b.angle());
     frame.gap = (b.center() + frame.arm_b) - (a.center() + frame.arm_a);
-    frame.angle = b.angle() - a.angle() - joint.reference_angle;
+    frame.angle = angleOf(joint, a, b);
     return frame;
 }
 
@@ -464,21 +470,24 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
             RigidShape& b = *shapes[places_[k]->second];
             if (a.isResting() && b.isResting()) continue;
             const JointDefinition& joint = joints_[k].definition;
-            const Frame frame = frameOf(joint, a, b);
+            // The angle first: a pin then works out its own anchors, after the angle's
+            // turn (correctPin), so the anchors are worked out here only for a slider or
+            // a rod, where they are used before anything moves.
+            const double angle = angleOf(joint, a, b);
             switch (joint.type) {
                 case JointType::revolute:
                     if (joint.limit) {
-                        correctLimit(a, b, {}, 1.0, 1.0, frame.angle - joint.limit->lower, rotation);
-                        correctLimit(a, b, {}, -1.0, -1.0, joint.limit->upper - frame.angle, rotation);
+                        correctLimit(a, b, {}, 1.0, 1.0, angle - joint.limit->lower, rotation);
+                        correctLimit(a, b, {}, -1.0, -1.0, joint.limit->upper - angle, rotation);
                     }
                     correctPin(a, b, joint, rotation);
                     break;
                 case JointType::weld:
-                    correctEquation(a, b, {}, 1.0, 1.0, frame.angle, rotation);
+                    correctEquation(a, b, {}, 1.0, 1.0, angle, rotation);
                     correctPin(a, b, joint, rotation);
                     break;
                 case JointType::prismatic: {
-                    correctEquation(a, b, {}, 1.0, 1.0, frame.angle, rotation);
+                    correctEquation(a, b, {}, 1.0, 1.0, angle, rotation);
                     const Frame now = frameOf(joint, a, b);
                     const Vec2 axis = axisOf(joint, a), normal = across(axis);
                     const Vec2 arm_a = now.gap + now.arm_a;
@@ -496,6 +505,7 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
                     break;
                 }
                 case JointType::distance: {
+                    const Frame frame = frameOf(joint, a, b);
                     const double length = frame.gap.length();
                     if (length < kShortestLink) break;
                     const Vec2 along = frame.gap * (1.0 / length);
