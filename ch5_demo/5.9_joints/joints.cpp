@@ -35,11 +35,15 @@ struct Frame {
 
 // The joint's angle alone needs no sine or cosine: the positional passes ask for it
 // where they need nothing else, as they run a few times a step for every joint.
-double angleOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+// (They take a shape, or the positional passes' Placed, joints.h: both have a centre and
+// an angle.)
+template <typename Body>
+double angleOf(const JointDefinition& joint, const Body& a, const Body& b) {
     return b.angle() - a.angle() - joint.reference_angle;
 }
 
-Frame frameOf(const JointDefinition& joint, const RigidShape& a, const RigidShape& b) {
+template <typename Body>
+Frame frameOf(const JointDefinition& joint, const Body& a, const Body& b) {
     Frame frame;
     frame.arm_a = toWorld(joint.local_a, a.angle());
     frame.arm_b = toWorld(joint.local_b, b.angle());
@@ -49,7 +53,10 @@ Frame frameOf(const JointDefinition& joint, const RigidShape& a, const RigidShap
 }
 
 // A slider's axis as a's turn has carried it, and the direction across it.
-Vec2 axisOf(const JointDefinition& joint, const RigidShape& a) { return toWorld(joint.local_axis, a.angle()); }
+template <typename Body>
+Vec2 axisOf(const JointDefinition& joint, const Body& a) {
+    return toWorld(joint.local_axis, a.angle());
+}
 Vec2 across(Vec2 axis) { return {-axis.y, axis.x}; }
 
 // A pair of bodies as the joints keep them apart: the smaller id first.
@@ -404,23 +411,23 @@ constexpr double kLongestJointShift = 6.0;
 // Moves and turns the pair by an impulse-like `amount` along `direction` at the arms
 // (a turn alone when the direction is 0): each by its inverse mass and inertia, as an
 // impulse would change its velocity, but applied to its position.
-void shiftAlong(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double amount,
+void shiftAlong(Joints::Placed& a, Joints::Placed& b, Vec2 direction, double turn_a, double turn_b, double amount,
                 bool rotation) {
-    a.move(direction * (-amount * a.invMass()));
-    b.move(direction * (amount * b.invMass()));
+    a.move(direction * (-amount * a.inv_mass));
+    b.move(direction * (amount * b.inv_mass));
     if (!rotation) return;
-    a.rotate(-turn_a * amount * a.invInertia());
-    b.rotate(turn_b * amount * b.invInertia());
+    a.rotate(-turn_a * amount * a.inv_inertia);
+    b.rotate(turn_b * amount * b.inv_inertia);
 }
 
-double correctionMass(const RigidShape& a, const RigidShape& b, Vec2 direction, double turn_a, double turn_b,
+double correctionMass(const Joints::Placed& a, const Joints::Placed& b, Vec2 direction, double turn_a, double turn_b,
                       bool rotation) {
-    const double turning = rotation ? turn_a * turn_a * a.invInertia() + turn_b * turn_b * b.invInertia() : 0.0;
-    return inverseOr0((a.invMass() + b.invMass()) * direction.dot(direction) + turning);
+    const double turning = rotation ? turn_a * turn_a * a.inv_inertia + turn_b * turn_b * b.inv_inertia : 0.0;
+    return inverseOr0((a.inv_mass + b.inv_mass) * direction.dot(direction) + turning);
 }
 
 // One limit C >= 0 pushed back when passed (C < 0), not pulled when within.
-void correctLimit(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double error,
+void correctLimit(Joints::Placed& a, Joints::Placed& b, Vec2 direction, double turn_a, double turn_b, double error,
                   bool rotation) {
     if (error >= 0.0) return;
     const double amount =
@@ -429,7 +436,7 @@ void correctLimit(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, d
 }
 
 // An equation C = 0 put right in one go (a rod's, cut at kLongestJointShift).
-void correctEquation(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a, double turn_b, double error,
+void correctEquation(Joints::Placed& a, Joints::Placed& b, Vec2 direction, double turn_a, double turn_b, double error,
                      bool rotation) {
     const double amount = -std::clamp(error, -kLongestJointShift, kLongestJointShift) *
                           correctionMass(a, b, direction, turn_a, turn_b, rotation);
@@ -437,11 +444,11 @@ void correctEquation(RigidShape& a, RigidShape& b, Vec2 direction, double turn_a
 }
 
 // A pin's two anchors made one point: the 2 x 2 system K x = -gap on the positions.
-void correctPin(RigidShape& a, RigidShape& b, const JointDefinition& joint, bool rotation) {
+void correctPin(Joints::Placed& a, Joints::Placed& b, const JointDefinition& joint, bool rotation) {
     const Frame frame = frameOf(joint, a, b);
     const Vec2 ra = rotation ? frame.arm_a : Vec2{}, rb = rotation ? frame.arm_b : Vec2{};
-    const double ia = rotation ? a.invInertia() : 0.0, ib = rotation ? b.invInertia() : 0.0;
-    const double mass_sum = a.invMass() + b.invMass();
+    const double ia = rotation ? a.inv_inertia : 0.0, ib = rotation ? b.inv_inertia : 0.0;
+    const double mass_sum = a.inv_mass + b.inv_mass;
     const double k11 = mass_sum + ra.y * ra.y * ia + rb.y * rb.y * ib;
     const double k12 = -ra.x * ra.y * ia - rb.x * rb.y * ib;
     const double k22 = mass_sum + ra.x * ra.x * ia + rb.x * rb.x * ib;
@@ -451,8 +458,8 @@ void correctPin(RigidShape& a, RigidShape& b, const JointDefinition& joint, bool
     const double length = frame.gap.length();
     const Vec2 gap = length > kLongestJointShift ? frame.gap * (kLongestJointShift / length) : frame.gap;
     const Vec2 impulse{-(k22 * gap.x - k12 * gap.y) / determinant, -(k11 * gap.y - k12 * gap.x) / determinant};
-    a.move(impulse * -a.invMass());
-    b.move(impulse * b.invMass());
+    a.move(impulse * -a.inv_mass);
+    b.move(impulse * b.inv_mass);
     if (!rotation) return;
     a.rotate(-ra.cross(impulse) * ia);
     b.rotate(rb.cross(impulse) * ib);
@@ -463,12 +470,24 @@ void correctPin(RigidShape& a, RigidShape& b, const JointDefinition& joint, bool
 void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
     if (!world.positional_correction || !world.movement) return;
     const bool rotation = world.rotation;
+    // The passes move each body's centre and angle alone, and each shape is put where
+    // its body ended once, after the last pass: turning a rectangle turns its four
+    // corners and rebuilds its normals, which a body between two pins would otherwise
+    // pay twice a pass. The centres and angles are the ones the shapes' own moves and
+    // turns would reach, the same sums in the same order.
+    placed_.clear();
+    for (const auto& shape : shapes) {
+        placed_.push_back({.position = shape->center(),
+                           .turned = shape->angle(),
+                           .inv_mass = shape->invMass(),
+                           .inv_inertia = shape->invInertia()});
+    }
     for (int pass = 0; pass < world.position_iterations; ++pass) {
         for (std::size_t k = 0; k < joints_.size(); ++k) {
             if (!places_[k]) continue;
-            RigidShape& a = *shapes[places_[k]->first];
-            RigidShape& b = *shapes[places_[k]->second];
-            if (a.isResting() && b.isResting()) continue;
+            if (shapes[places_[k]->first]->isResting() && shapes[places_[k]->second]->isResting()) continue;
+            Placed& a = placed_[places_[k]->first];
+            Placed& b = placed_[places_[k]->second];
             const JointDefinition& joint = joints_[k].definition;
             // The angle first: a pin then works out its own anchors, after the angle's
             // turn (correctPin), so the anchors are worked out here only for a slider or
@@ -520,6 +539,11 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
                 }
             }
         }
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        RigidShape& shape = *shapes[i];
+        if (placed_[i].center() != shape.center()) shape.move(placed_[i].center() - shape.center());
+        if (placed_[i].angle() != shape.angle()) shape.rotate(placed_[i].angle() - shape.angle());
     }
 }
 

@@ -161,6 +161,19 @@ public:
     // Springs and ropes within their range are left as they are.
     void correctPositions(ShapeList shapes, const WorldSettings& world);
 
+    // A body as the positional passes move it: where it is, and how much it answers.
+    // It answers center(), angle(), move() and rotate() as a shape does, with the same sums.
+    struct Placed {
+        Vec2 position;
+        double turned = 0.0;
+        double inv_mass = 0.0;
+        double inv_inertia = 0.0;
+        Vec2 center() const { return position; }
+        double angle() const { return turned; }
+        void move(Vec2 offset) { position = position.add(offset); }
+        void rotate(double turn) { turned += turn; }
+    };
+
 private:
     // One scalar constraint as the step solves it: its speed is
     //     Cdot = direction . (v_b - v_a) + w_b turn_b - w_a turn_a
@@ -202,6 +215,8 @@ private:
     // Per joint, this step: the places of its bodies in the list (none: not solved).
     std::vector<std::optional<std::pair<std::size_t, std::size_t>>> places_;
     std::vector<Prepared> prepared_;
+    // Per body in the list, during the positional passes (kept to reuse its memory).
+    std::vector<Placed> placed_;
     // The pairs of body ids (smaller first) of the joints that keep their bodies apart,
     // sorted.
     std::vector<std::pair<BodyId, BodyId>> apart_;
