@@ -14,6 +14,7 @@
 //   build/joints_bench              the tables (about 20 s of one core)
 //   BOX_MASS=30 build/joints_bench  the bridge's box of another mass (planks are 1)
 //   NO_BOX=1 build/joints_bench     the bridge with nothing on it
+//   build/joints_bench --only grid  one scene alone (chain, bridge or grid): for perf record
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,6 +24,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "browser.h"
@@ -324,22 +326,29 @@ void printTable(const std::vector<Point>& points) {
 
 }  // namespace
 
-int main(int argc, char**) {
-    if (argc > 1) {
-        std::fprintf(stderr, "joints_bench: takes no arguments\n");
+int main(int argc, char** argv) {
+    // No arguments: every scene. "--only NAME": that scene alone, so that a profiler
+    // sees one scene's step (and nothing is timed that was not asked for).
+    std::string_view only;
+    if (argc == 3 && std::string_view(argv[1]) == "--only") only = argv[2];
+    const bool known = only.empty() || only == "chain" || only == "bridge" || only == "grid";
+    if ((argc != 1 && argc != 3) || (argc == 3 && only.empty()) || !known) {
+        std::fprintf(stderr, "joints_bench: takes no arguments, or --only chain|bridge|grid\n");
         return 2;
     }
     // The chain and the bridge are cheap: a sweep, each run timed three times. The grid
     // costs a second a run: a few points, once each.
     struct Plan {
+        std::string_view name;
         JointScene scene;
         std::vector<int> iterations;
         std::vector<int> substep_iterations;
         int repeats;
     };
     const std::vector<int> sweep{4, 6, 8, 12, 16, 24, 32};
-    for (const Plan& plan :
-         {Plan{chain(), sweep, {4, 8}, 3}, Plan{bridge(), sweep, {4, 8}, 3}, Plan{grid(), {8, 16, 32}, {8}, 1}}) {
+    for (const Plan& plan : {Plan{"chain", chain(), sweep, {4, 8}, 3}, Plan{"bridge", bridge(), sweep, {4, 8}, 3},
+                             Plan{"grid", grid(), {8, 16, 32}, {8}, 1}}) {
+        if (!only.empty() && plan.name != only) continue;
         std::printf("\n%s, 10 s at 60 Hz\n\n", plan.scene.name);
         std::vector<Point> points;
         for (const int iterations : plan.iterations) {
