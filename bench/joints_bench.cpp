@@ -15,6 +15,7 @@
 //   BOX_MASS=30 build/joints_bench  the bridge's box of another mass (planks are 1)
 //   NO_BOX=1 build/joints_bench     the bridge with nothing on it
 //   build/joints_bench --only grid  one scene alone (chain, bridge or grid): for perf record
+//   STAGE_ONLY=1 build/joints_bench the stage's rows alone (farm-bench's ratios of two builds)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -361,6 +362,7 @@ int main(int argc, char** argv) {
         }
 #if BENCH_HAS_BOX2D
         for (const int iterations : plan.iterations) {
+            if (std::getenv("STAGE_ONLY")) break;
             points.push_back(
                 {"Box2D 2.4", iterations, fastestOf(plan.repeats, [&] { return runBox2d(plan.scene, iterations); })});
         }

@@ -22,7 +22,6 @@
 // their pins), unless it says "collide_connected" (Box2D's collideConnected). A joint
 // holds its bodies together in one island (islands.h): they sleep and wake together.
 
-#include <array>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -162,17 +161,25 @@ public:
     void correctPositions(ShapeList shapes, const WorldSettings& world);
 
     // A body as the positional passes move it: where it is, and how much it answers.
-    // It answers center(), angle(), move() and rotate() as a shape does, with the same sums.
+    // It answers center(), angle(), move() and rotate() as a shape does, with the same sums,
+    // and turns a point of its own frame into the world's (toWorld) with the cosine and
+    // sine of its angle, which it keeps as it turns (rotate, joints.cpp).
     struct Placed {
         Vec2 position;
         double turned = 0.0;
         double inv_mass = 0.0;
         double inv_inertia = 0.0;
+        double cosine = 1.0;  // of `turned`
+        double sine = 0.0;
         Vec2 center() const { return position; }
         double angle() const { return turned; }
         void move(Vec2 offset) { position = position.add(offset); }
-        void rotate(double turn) { turned += turn; }
+        void rotate(double turn);
+        Vec2 toWorld(Vec2 local) const {
+            return {local.x * cosine - local.y * sine, local.x * sine + local.y * cosine};
+        }
     };
+    static Placed placedFrom(const RigidShape& shape);
 
 private:
     // One scalar constraint as the step solves it: its speed is
@@ -197,17 +204,20 @@ private:
     // A pin: two anchors made one point, both directions at once (a 2 x 2 system).
     struct Pin {
         Vec2 arm_a, arm_b;                                         // from each centre to its anchor, world px
-        double k11 = 0.0, k12 = 0.0, k22 = 0.0;                    // K: the speeds unit impulses make
         double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1 (0: nothing answers)
         Vec2 bias;                                                 // bias_rate * the gap between the anchors
         Softness soft;
     };
-    static constexpr std::size_t kMostRows = 4;
+    // A joint as the iterations meet it. Its rows are kept apart (rows_, from first_row
+    // on), so that a joint of a pin alone, the commonest, is a small record: the
+    // iterations read the joints one after another, and the fewer bytes each takes,
+    // the fewer the cache lines they wait for (a chain's step a few % faster than with
+    // room for a slider's four rows in every joint).
     struct Prepared {
         std::size_t joint = 0;
         std::size_t a = 0, b = 0;
-        std::array<Row, kMostRows> rows;  // a slider's four at most
-        std::size_t row_count = 0;
+        std::size_t first_row = 0;
+        std::size_t row_count = 0;  // a slider's four at most
         std::optional<Pin> pin;
     };
 
@@ -215,8 +225,11 @@ private:
     // Per joint, this step: the places of its bodies in the list (none: not solved).
     std::vector<std::optional<std::pair<std::size_t, std::size_t>>> places_;
     std::vector<Prepared> prepared_;
-    // Per body in the list, during the positional passes (kept to reuse its memory).
+    std::vector<Row> rows_;
+    // Per body in the list, during prepare (the bodies a joint holds, placed_known_) and
+    // the positional passes (kept to reuse its memory).
     std::vector<Placed> placed_;
+    std::vector<bool> placed_known_;
     // The pairs of body ids (smaller first) of the joints that keep their bodies apart,
     // sorted.
     std::vector<std::pair<BodyId, BodyId>> apart_;
