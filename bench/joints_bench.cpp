@@ -172,6 +172,9 @@ Result runStage(const JointScene& scene, int iterations, int substeps = 1) {
     world.velocity_iterations = iterations;
     world.remove_out_of_bounds = false;
     world.sleep = false;
+    // As Box2D's runs below (SetContinuousPhysics(false)): nothing in these scenes moves
+    // far against its size in a step, and the gaps are the same with the sweeps on.
+    world.continuous = false;
     browser::Window window(kDt * 1000.0);
     engine::Core core(window, world);
     const auto add = [&core](const Piece& piece) -> engine::RigidShape& {
@@ -348,7 +351,7 @@ int main(int argc, char** argv) {
     };
     const std::vector<int> sweep{4, 6, 8, 12, 16, 24, 32};
     for (const Plan& plan : {Plan{"chain", chain(), sweep, {4, 8}, 3}, Plan{"bridge", bridge(), sweep, {4, 8}, 3},
-                             Plan{"grid", grid(), {8, 16, 32}, {8}, 1}}) {
+                             Plan{"grid", grid(), {8, 12, 16, 32}, {8}, 1}}) {
         if (!only.empty() && plan.name != only) continue;
         std::printf("\n%s, 10 s at 60 Hz\n\n", plan.scene.name);
         std::vector<Point> points;

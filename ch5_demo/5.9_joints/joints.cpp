@@ -195,7 +195,82 @@ bool Joints::startStep(ShapeList shapes, Islands& islands) {
         places_[k] = {*a, *b};
         woke = islands.joined(shapes, *a, *b) || woke;
     }
+    orderFromSupports(shapes);
     return woke;
+}
+
+// Gauss-Seidel ends each sweep on the joints it meets last: their speeds (or, in the
+// positional passes, their gaps) are right when the sweep ends, those met before only
+// nearly, as the later ones have pulled their bodies since. The joints nearest a
+// support (a static or kinematic body) carry the weight of everything beyond them, and
+// a chain's widest gap opens there. So the joints are met farthest from the supports
+// first and nearest last: a load's pull then reaches the support within one sweep
+// (support first, it would move one link a sweep), and the sweep ends on the joints
+// that carry the most. The distance is counted in joints, from the nearest support,
+// by a breadth-first walk; a group with no support comes first, its joints in the
+// order they were made (ties keep that order too). A general order: it holds for a chain, a
+// bridge held at both ends (the middle first), a net hung from a corner, a ragdoll on
+// a kinematic hand. (Box2D 2.4 happens to meet a hanging chain in this order: it builds
+// an island from its newest body, the chain's load.) The walk runs again only when a
+// joint, a body's place or a body's being a support changed.
+void Joints::orderFromSupports(ShapeList shapes) {
+    const auto supports = [&](std::size_t body) { return !shapes[body]->isDynamic(); };
+    bool same = ordered_places_.size() == places_.size();
+    for (std::size_t k = 0; same && k < places_.size(); ++k) {
+        same = ordered_places_[k] == places_[k] &&
+               (!places_[k] ||
+                ordered_supports_[k] == std::pair{supports(places_[k]->first), supports(places_[k]->second)});
+    }
+    if (same) return;
+    ordered_places_ = places_;
+    ordered_supports_.assign(places_.size(), {false, false});
+    // The joints at each body, as a list per body (first_joint_[i] to first_joint_[i + 1]).
+    constexpr std::size_t kUnreached = std::numeric_limits<std::size_t>::max();
+    first_joint_.assign(shapes.size() + 1, 0);
+    for (const auto& place : places_) {
+        if (!place) continue;
+        ++first_joint_[place->first + 1];
+        ++first_joint_[place->second + 1];
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i) first_joint_[i + 1] += first_joint_[i];
+    joint_at_.resize(first_joint_.back());
+    std::vector<std::size_t> filled(first_joint_.begin(), first_joint_.end() - 1);
+    for (std::size_t k = 0; k < places_.size(); ++k) {
+        if (!places_[k]) continue;
+        joint_at_[filled[places_[k]->first]++] = k;
+        joint_at_[filled[places_[k]->second]++] = k;
+    }
+    // Hops from the nearest support, breadth first from every support at once.
+    hops_.assign(shapes.size(), kUnreached);
+    std::vector<std::size_t> queue;
+    for (std::size_t k = 0; k < places_.size(); ++k) {
+        if (!places_[k]) continue;
+        const auto [a, b] = *places_[k];
+        ordered_supports_[k] = {supports(a), supports(b)};
+        for (const std::size_t body : {a, b}) {
+            if (supports(body) && hops_[body] == kUnreached) {
+                hops_[body] = 0;
+                queue.push_back(body);
+            }
+        }
+    }
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+        const std::size_t body = queue[next];
+        for (std::size_t j = first_joint_[body]; j < first_joint_[body + 1]; ++j) {
+            const auto [a, b] = *places_[joint_at_[j]];
+            const std::size_t other = a == body ? b : a;
+            if (hops_[other] != kUnreached) continue;
+            hops_[other] = hops_[body] + 1;
+            queue.push_back(other);
+        }
+    }
+    order_.clear();
+    for (std::size_t k = 0; k < places_.size(); ++k) {
+        if (places_[k]) order_.push_back(k);
+    }
+    const auto distance = [&](std::size_t k) { return std::min(hops_[places_[k]->first], hops_[places_[k]->second]); };
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::size_t one, std::size_t other) { return distance(one) > distance(other); });
 }
 
 void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world) {
@@ -213,8 +288,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         return placed_[i];
     };
     const Softness stiff = softness(world.joint_hertz, world.joint_damping_ratio, world.dt);
-    for (std::size_t k = 0; k < joints_.size(); ++k) {
-        if (!places_[k]) continue;
+    for (const std::size_t k : order_) {
         const auto [a, b] = *places_[k];
         const RigidShape& shape_a = *shapes[a];
         const RigidShape& shape_b = *shapes[b];
@@ -269,7 +343,11 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
             addRow(made);
         };
         const auto pin = [&] {
-            Pin made{.arm_a = frame.arm_a, .arm_b = frame.arm_b, .bias = frame.gap * stiff.bias_rate, .soft = stiff};
+            Pin made{.arm_a = frame.arm_a,
+                     .arm_b = frame.arm_b,
+                     .bias = frame.gap * stiff.bias_rate,
+                     .soft = stiff,
+                     .rigid = stiff.mass_scale == 1.0 && stiff.impulse_scale == 0.0};
             const Vec2 ra = frame.arm_a, rb = frame.arm_b;
             // K: the speeds unit impulses make.
             const double k11 = inv_mass_sum + ra.y * ra.y * body_a.inv_inertia + rb.y * rb.y * body_b.inv_inertia;
@@ -405,7 +483,11 @@ void Joints::solve(std::vector<SolverBody>& bodies) {
         const Vec2 wanted = speed + pin.bias;
         const Vec2 solved{pin.inverse11 * wanted.x + pin.inverse12 * wanted.y,
                           pin.inverse12 * wanted.x + pin.inverse22 * wanted.y};
-        const Vec2 impulse = solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
+        // A rigid pin (the world's joint_hertz 0) keeps the whole of it: its mass scale 1
+        // and impulse scale 0 would change nothing but the time it takes, and this is the
+        // solver's innermost line.
+        const Vec2 impulse =
+            pin.rigid ? -solved : solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
         pushPin(a, b, pin.arm_a, pin.arm_b, impulse);
         totals.point += impulse;
     }
@@ -545,8 +627,7 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
     placed_.clear();
     for (const auto& shape : shapes) placed_.push_back(placedFrom(*shape));
     for (int pass = 0; pass < world.position_iterations; ++pass) {
-        for (std::size_t k = 0; k < joints_.size(); ++k) {
-            if (!places_[k]) continue;
+        for (const std::size_t k : order_) {
             if (shapes[places_[k]->first]->isResting() && shapes[places_[k]->second]->isResting()) continue;
             Placed& a = placed_[places_[k]->first];
             Placed& b = placed_[places_[k]->second];

@@ -207,6 +207,7 @@ private:
         double inverse11 = 0.0, inverse12 = 0.0, inverse22 = 0.0;  // K^-1 (0: nothing answers)
         Vec2 bias;                                                 // bias_rate * the gap between the anchors
         Softness soft;
+        bool rigid = false;  // soft is {}: the impulse is K^-1's answer whole
     };
     // A joint as the iterations meet it. Its rows are kept apart (rows_, from first_row
     // on), so that a joint of a pin alone, the commonest, is a small record: the
@@ -224,6 +225,14 @@ private:
     std::vector<Joint> joints_;
     // Per joint, this step: the places of its bodies in the list (none: not solved).
     std::vector<std::optional<std::pair<std::size_t, std::size_t>>> places_;
+    // The joints that have both bodies, in the order the solver meets them: farthest
+    // from a support first (orderFromSupports, joints.cpp), and what it was worked out
+    // from, with the walk's lists (kept to reuse their memory).
+    void orderFromSupports(ShapeList shapes);
+    std::vector<std::size_t> order_;
+    std::vector<std::optional<std::pair<std::size_t, std::size_t>>> ordered_places_;
+    std::vector<std::pair<bool, bool>> ordered_supports_;
+    std::vector<std::size_t> first_joint_, joint_at_, hops_;
     std::vector<Prepared> prepared_;
     std::vector<Row> rows_;
     // Per body in the list, during prepare (the bodies a joint holds, placed_known_) and
