@@ -624,8 +624,14 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
     // corners and rebuilds its normals, which a body between two pins would otherwise
     // pay twice a pass. The centres and angles are the ones the shapes' own moves and
     // turns would reach, the same sums in the same order.
-    placed_.clear();
-    for (const auto& shape : shapes) placed_.push_back(placedFrom(*shape));
+    //
+    // The bodies placed are the ones prepare placed (the joints the passes meet are the
+    // ones it prepared), where they are now; a body no joint holds is left alone, so a
+    // pile beside a pendulum costs the passes nothing.
+    if (placed_known_.size() != shapes.size()) return;  // the list changed since prepare
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        if (placed_known_[i]) placed_[i] = placedFrom(*shapes[i]);
+    }
     for (int pass = 0; pass < world.position_iterations; ++pass) {
         for (const std::size_t k : order_) {
             if (shapes[places_[k]->first]->isResting() && shapes[places_[k]->second]->isResting()) continue;
@@ -684,6 +690,7 @@ void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
         }
     }
     for (std::size_t i = 0; i < shapes.size(); ++i) {
+        if (!placed_known_[i]) continue;
         RigidShape& shape = *shapes[i];
         if (placed_[i].center() != shape.center()) shape.move(placed_[i].center() - shape.center());
         if (placed_[i].angle() != shape.angle()) shape.rotate(placed_[i].angle() - shape.angle());
