@@ -69,15 +69,16 @@ TEST_CASE("s5_9: a box on a kinematic platform over speed, friction, gravity and
         double box;      // px, the box's side
     };
     const Point points[] = {
-        {20, 0.2, 300, 40}, {100, 0.5, 400, 40}, {300, 1.0, 2000, 10},
-        {300, 0.3, 2000, 100}, {50, 0.8, 50, 40}, {200, 0.5, 300, 20},
+        {20, 0.2, 300, 40},    {100, 0.5, 400, 40}, {300, 1.0, 2000, 10},
+        {300, 0.3, 2000, 100}, {50, 0.8, 50, 40},   {200, 0.5, 300, 20},
     };
-    std::printf("platform sweep: solver, v px/s, mu, g px/s^2, box px | t* s, speed at t*/2 / the step's mu g t, carried: "
-                "motion px/s, velocity px/s\n");
+    std::printf(
+        "platform sweep: solver, v px/s, mu, g px/s^2, box px | t* s, speed at t*/2 / the step's mu g t, carried: "
+        "motion px/s, velocity px/s\n");
     for (const SolverKind solver : kBothSolvers) {
         for (const Point& point : points) {
-            INFO(solverName(solver) << ": platform at " << point.speed << " px/s, friction " << point.friction
-                                    << ", g " << point.gravity << ", box " << point.box << " px");
+            INFO(solverName(solver) << ": platform at " << point.speed << " px/s, friction " << point.friction << ", g "
+                                    << point.gravity << ", box " << point.box << " px");
             engine::WorldSettings world = engine::kBookWorld;
             world.solver = solver;
             world.gravity = {0, point.gravity};
@@ -91,14 +92,14 @@ TEST_CASE("s5_9: a box on a kinematic platform over speed, friction, gravity and
                 page.core.add(engine::Rectangle({2000, 300}, 4000, 20, {.friction = point.friction, .restitution = 0}));
             platform.makeKinematic();
             platform.setVelocity({point.speed, 0});
-            const engine::RigidShape& box = page.core.add(
-                engine::Rectangle({2000, 290 - point.box / 2}, point.box, point.box,
-                                  {.friction = point.friction, .restitution = 0}));
+            const engine::RigidShape& box = page.core.add(engine::Rectangle(
+                {2000, 290 - point.box / 2}, point.box, point.box, {.friction = point.friction, .restitution = 0}));
             const double t_star = point.speed / (point.friction * point.gravity);
             // Sliding: the speed over the two steps about t* / 2.
             const int half = static_cast<int>(std::lround(t_star / 2 * kStepsPerSecond));
             page.steps(half - 1);
-            const double sliding = motion(page, box, 2) / (point.friction * point.gravity * (half + 0.5) / kStepsPerSecond);
+            const double sliding =
+                motion(page, box, 2) / (point.friction * point.gravity * (half + 0.5) / kStepsPerSecond);
             // The book's passes pull it along more weakly (below): give them twice as long.
             const double settled = (solver == SolverKind::book ? 2.0 * t_star : t_star) + 0.5;
             const int carried = static_cast<int>(std::ceil(settled * kStepsPerSecond));
