@@ -328,7 +328,7 @@ TEST_CASE("s5_9: hanging chains over link length, mass ratio, gravity and iterat
 //
 // Tolerances. The period, from the first five crossings of the rest (or sag) line, each
 // interpolated between two steps: within 0.5 % of the step's closed form (the bounce is
-// a sine sampled 7 to 120 times a period; a linear interpolation of a crossing errs by
+// a sine sampled 9 to 120 times a period; a linear interpolation of a crossing errs by
 // the sine's curvature there, which is zero at the crossing itself; measured 0.03 % at
 // most). The sag: within 0.1 % of g / w^2, ten times what 10^-4 of the bounce leaves.
 // The free discs: back at their rest length within 0.01 px (their 20 px stretch times
