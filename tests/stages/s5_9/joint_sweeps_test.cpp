@@ -226,12 +226,12 @@ TEST_CASE("s5_9: pendulums over gravity, size, shape, iterations and stiffness s
 //   - up to 10:1, hard: each pin's force within 1 % of the weight below it, and the
 //     chain's stretch (how much further the load hangs than where it was put) under
 //     10^-4 of its length: at 8 iterations the forces' error falls about 6 times a
-//     second (1:1: 100 times), 7e-4 and 4.5e-5 of the length in the 5th second at 10:1;
+//     second (1:1: 100 times), 8e-4 and 4.9e-5 of the length in the 5th second at 10:1
+//     (7.4e-4 and 4.5e-5 with the joints met in the order they were made);
 //   - 100:1, hard, 32 iterations: 5 % and 3 % (2e-2 and 1.8e-2 in the 5th second): the
 //     positional passes take the load's first drop back out at some 30 % a second, as
 //     Gauss-Seidel on positions crosses a 100:1 chain as slowly as on velocities (at
-//     8 and 16 iterations the forces are still 10 % or more out after 5 s: the README's
-//     bridge too needs 16 at 100:1);
+//     8 and 16 iterations the forces are still 10 % or more out after 5 s);
 //   - soft (joint_hertz 60 Hz, 32 iterations): forces within 1 %, stretch under 0.2 %
 //     (a soft pin holds its load only as its error grows, which the positional passes
 //     take back out each step; 0.12 % is left at 10:1).
