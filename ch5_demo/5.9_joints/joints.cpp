@@ -19,10 +19,6 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 // this step (the rod's length is then 0 px to rounding): its rows wait for the next.
 constexpr double kShortestLink = 1e-9;  // px
 
-// A point fixed in a body's frame, turned as the body is now.
-Vec2 toWorld(Vec2 local, double angle) { return local.rotate({}, angle); }
-Vec2 toBody(Vec2 world, double angle) { return world.rotate({}, -angle); }
-
 // The velocity a spin w gives a point at arm r from the centre: w x r.
 Vec2 spinAt(double w, Vec2 arm) { return {-w * arm.y, w * arm.x}; }
 

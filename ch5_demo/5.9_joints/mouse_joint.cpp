@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "circle.h"
+#include "joints.h"
 #include "narrow_phase.h"
 
 namespace engine {
@@ -15,9 +16,6 @@ namespace {
 constexpr double kProbeRadius = 0.5;  // px
 constexpr double kDotRadius = 3.0;    // px, the ends of the line drawn
 
-// Where the shape `shape` holds a point, px from its centre and unturned, now.
-Vec2 turned(Vec2 local, double angle) { return local.rotate({}, angle); }
-
 }  // namespace
 
 std::optional<std::size_t> MouseJoint::grab(ShapeList shapes, Vec2 point) {
@@ -26,7 +24,7 @@ std::optional<std::size_t> MouseJoint::grab(ShapeList shapes, Vec2 point) {
         const RigidShape& shape = *shapes[k];
         if (!shape.isDynamic() || !narrowPhase(probe, shape)) continue;
         body_ = shape.id();
-        local_anchor_ = turned(point - shape.center(), -shape.angle());
+        local_anchor_ = toBody(point - shape.center(), shape.angle());
         target_ = point;
         return k;
     }
@@ -34,7 +32,7 @@ std::optional<std::size_t> MouseJoint::grab(ShapeList shapes, Vec2 point) {
 }
 
 Vec2 MouseJoint::grabbedPoint(const RigidShape& shape) const {
-    return shape.center() + turned(local_anchor_, shape.angle());
+    return shape.center() + toWorld(local_anchor_, shape.angle());
 }
 
 void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
@@ -56,7 +54,7 @@ void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
     const double gamma = 1.0 / (h * (damping + h * stiffness));
     const double beta = h * stiffness / (damping + h * stiffness);
 
-    const Vec2 arm = turned(local_anchor_, shape.angle());
+    const Vec2 arm = toWorld(local_anchor_, shape.angle());
     const Vec2 error = shape.center() + arm - target_;  // C, px
     const double w = shape.angularVelocity();
     const Vec2 point_velocity = shape.velocity() + Vec2{-w * arm.y, w * arm.x};
@@ -80,7 +78,7 @@ void MouseJoint::draw(browser::Canvas& context, ShapeList shapes) const {
     const auto held = std::find_if(shapes.begin(), shapes.end(), [&](const auto& s) { return s->id() == body_; });
     if (held == shapes.end()) return;
     const Vec2 grabbed = grabbedPoint(**held);
-    context.setStrokeStyle(browser::colors::kOrange);
+    context.setStrokeStyle(kLineColor);
     context.beginPath();
     context.moveTo(grabbed.x, grabbed.y);
     context.lineTo(target_.x, target_.y);

@@ -62,7 +62,9 @@ public:
     // a sleeping shape (the pointer's moves wake it, core.cpp).
     void apply(ShapeList shapes, const WorldSettings& world);
 
-    // A line from the grabbed point to the pointer, and a dot at each end.
+    // A line from the grabbed point to the pointer, and a dot at each end, in this colour
+    // (the overlay's legend names it, joints_overlay.h).
+    static constexpr browser::Color kLineColor = browser::colors::kOrange;
     void draw(browser::Canvas& context, ShapeList shapes) const;
 
 private:
