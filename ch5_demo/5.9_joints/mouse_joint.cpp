@@ -56,7 +56,8 @@ void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
 
     const Vec2 arm = toWorld(local_anchor_, shape.angle());
     const Vec2 error = shape.center() + arm - target_;  // C, px
-    const double w = shape.angularVelocity();
+    // Implicitly, as the spring: dw/dt = -kSpinDamping w over h, solved for the end of the step.
+    const double w = shape.angularVelocity() / (1.0 + h * kSpinDamping);
     const Vec2 point_velocity = shape.velocity() + Vec2{-w * arm.y, w * arm.x};
     // K + gamma 1: a unit impulse P at the arm r changes the point's velocity by P / m
     // and, through the turn (r x P) / I, by (r x P) / I times (-r.y, r.x).

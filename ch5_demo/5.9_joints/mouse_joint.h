@@ -44,6 +44,14 @@ public:
     // drag across the canvas overshoots: the cap that speeds the shape up also limits
     // how hard the spring can stop it at the pointer.
     static constexpr double kMaxPullAcceleration = 20000.0;
+    // The grabbed shape's spin is damped at this rate, per second: each (sub-)step divides
+    // it by 1 + h kSpinDamping, 1.02 at 1/60 s, so a spin falls to 0.98 of itself a step,
+    // to 30 % in a second. The pull acts at one point, so it turns the shape about it
+    // as a pendulum, and the spring, damped along its line, does nothing against the
+    // swing: held off its centre, a shape would swing on and on. Box2D 2.4's mouse joint
+    // takes the same 2 % from the spin in each of its 1/60 s steps; as a rate, the damping
+    // is the same whatever the step or the sub-steps.
+    static constexpr double kSpinDamping = 1.2;  // 1/s
 
     // Grabs the shape at `point` that forces move (not a static or kinematic one), the
     // one drawn last where several overlap there; returns its place in the list, or
