@@ -144,8 +144,10 @@ void Core::update() {
     WorldSettings sub_step = settings_;
     sub_step.dt = settings_.dt / settings_.substeps;
     for (int k = 0; k < settings_.substeps; ++k) {
-        mouse_.apply(all_objects_, sub_step);  // 5.9: nothing while no shape is held
-        physics_.collision(all_objects_, sub_step);
+        // 5.9: the mouse's pull (nothing while no shape is held): before the book's passes,
+        // inside the sequential impulses' iterations.
+        if (sub_step.solver == SolverKind::book) mouse_.apply(all_objects_, sub_step);
+        physics_.collision(all_objects_, sub_step, &mouse_);
         if (settings_.continuous) continuous_.startStep(all_objects_);
         for (const auto& shape : all_objects_) {
             if (!shape->sleep().asleep) shape->update(sub_step);
