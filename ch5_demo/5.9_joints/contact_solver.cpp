@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "mouse_joint.h"
 #include "narrow_phase.h"
 
 namespace engine {
@@ -49,12 +50,14 @@ std::size_t ContactSolver::pointCount() const {
 }
 
 void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events,
-                         Joints& joints, const WorldSettings& world, std::vector<Collision>& found) {
+                         Joints& joints, const WorldSettings& world, std::vector<Collision>& found, MouseJoint* mouse) {
+    mouse_ = mouse;
     // The joints first: a body joined to an awake one wakes before the pass meets its pairs.
     if (!joints.empty()) joints.startStep(shapes, islands);
     findContacts(shapes, broad_phase, islands, events, joints, world, found);
     prepare(shapes, world);
     joints.prepare(shapes, bodies_, world);
+    if (mouse_ != nullptr) mouse_->prepare(shapes, bodies_, world);  // warm started, as the joints
     if (world.warm_starting) {
         joints.warmStart(bodies_);
         warmStart();
@@ -286,6 +289,7 @@ void ContactSolver::solveVelocities(int iterations, bool with_removal, Joints& j
     }
     for (int iteration = 0; iteration < iterations; ++iteration) {
         joints.solve(bodies_);  // the joints first, as Box2D: the contacts have the last word
+        if (mouse_ != nullptr) mouse_->solve(bodies_);
         for (Contact& contact : contacts_) {
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];

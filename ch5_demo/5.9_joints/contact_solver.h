@@ -61,6 +61,8 @@ struct Turns {
 
 // A shape as the solver sees it over a step: its velocities, worked on in place and
 // written back at the end, and how it answers an impulse.
+class MouseJoint;  // mouse_joint.h
+
 struct SolverBody {
     Motion velocity;
     Motion pseudo;  // split impulses' pseudo velocity: moves the shape once, then dropped
@@ -79,9 +81,9 @@ public:
     // awake one reaches, and to `events` (5.7's contact_events.h); a pair of two
     // sleeping or static shapes is not tested. 5.9's joints (joints.h) are solved in
     // the same iterations, each before the contacts, and a pair a joint keeps apart is
-    // not tested either.
+    // not tested either; so is the mouse's pull, `mouse` (mouse_joint.h), after them.
     void step(ShapeList shapes, BroadPhase& broad_phase, Islands& islands, ContactEvents& events, Joints& joints,
-              const WorldSettings& world, std::vector<Collision>& found);
+              const WorldSettings& world, std::vector<Collision>& found, MouseJoint* mouse = nullptr);
 
     // How many contact points the last step solved, and how many of them were found
     // again from the step before (and so warm started, when that is on).
@@ -137,6 +139,7 @@ private:
     void solvePositions(ShapeList shapes, const WorldSettings& world);
 
     std::vector<SolverBody> bodies_;
+    MouseJoint* mouse_ = nullptr;  // the step's mouse joint (5.9), or none
     std::vector<Contact> contacts_;
     // The last step's contacts, and an index of them by their pair of shapes, sorted so
     // that a pair is found by bisection. Shapes are named by their ids (rigid_shape.h):

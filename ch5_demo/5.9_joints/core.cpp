@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <string>
 
+#include "kinematic_drawing.h"
 #include "number_format.h"
 #include "overlay.h"
+#include "overlay_draw.h"
 
 namespace engine {
 
@@ -142,8 +144,10 @@ void Core::update() {
     WorldSettings sub_step = settings_;
     sub_step.dt = settings_.dt / settings_.substeps;
     for (int k = 0; k < settings_.substeps; ++k) {
-        mouse_.apply(all_objects_, sub_step);  // 5.9: nothing while no shape is held
-        physics_.collision(all_objects_, sub_step);
+        // 5.9: the mouse's pull (nothing while no shape is held): before the book's passes,
+        // inside the sequential impulses' iterations.
+        if (sub_step.solver == SolverKind::book) mouse_.apply(all_objects_, sub_step);
+        physics_.collision(all_objects_, sub_step, &mouse_);
         if (settings_.continuous) continuous_.startStep(all_objects_);
         for (const auto& shape : all_objects_) {
             if (!shape->sleep().asleep) shape->update(sub_step);
@@ -259,6 +263,17 @@ void Core::updateUIEcho() {
         .append(std::to_string(movingCount(all_objects_)))
         .append("\n");
     beyond.append("  Continuous: ").append(echoFlag(settings_.continuous)).append("\n");
+    // 5.9: the kinematic bodies, named with their colour, once the world has had one
+    // (and from then on, so that the page keeps its height when a reset removes them).
+    const auto kinematic = static_cast<std::size_t>(std::count_if(
+        all_objects_.begin(), all_objects_.end(), [](const auto& shape) { return shape->isKinematic(); }));
+    kinematic_named_ = kinematic_named_ || kinematic > 0;
+    if (kinematic_named_)
+        beyond.append("  Kinematic (purple): ")
+            .append(std::to_string(kinematic))
+            .append(", arrows ")
+            .append(browser::overlay::fixed(kKinematicMotionShown, 0))
+            .append(" s\n");
     beyond +=
         "  Y: Sleeping [On/Off]\n"
         "  P: Continuous [On/Off]\n";
@@ -270,16 +285,19 @@ void Core::draw() {
     browser::Canvas& context = window_.document.canvas;
     context.clear();
     // A sleeping shape is drawn gray: a reader sees at a glance what the step leaves out.
-    // A sensor is green: it is there, but nothing rests on it. The game may paint the rest.
+    // A sensor is green: it is there, but nothing rests on it. A kinematic body (5.9) is
+    // purple, with arrows for how it moves (kinematic_drawing.h). The game may paint the rest.
     for (std::size_t i = 0; i < all_objects_.size(); ++i) {
         const RigidShape& shape = *all_objects_[i];
         const std::optional<browser::Color> painted = game_ ? game_->colourOf(shape) : std::nullopt;
         context.setStrokeStyle(i == selected_         ? browser::colors::kRed
                                : shape.sleep().asleep ? browser::colors::kGray
                                : shape.isSensor()     ? browser::colors::kGreen
+                               : shape.isKinematic()  ? kKinematicColor
                                : painted              ? *painted
                                                       : browser::colors::kBlue);
         shape.draw(context);
+        if (shape.isKinematic()) drawKinematicMotion(context, shape);
     }
     mouse_.draw(context, all_objects_);  // 5.9: the pull, while a shape is held
 }

@@ -178,6 +178,7 @@ private:
     ContinuousCollision continuous_;
     MouseJoint mouse_;
     long step_count_ = 0;
+    bool kinematic_named_ = false;  // the echo has named a kinematic body: it keeps the line
     std::function<void()> step_listener_;
     GameLogic* game_ = nullptr;
 };

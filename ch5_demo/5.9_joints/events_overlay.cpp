@@ -13,6 +13,7 @@ namespace draw = browser::overlay;
 constexpr Color kEventBeginColor{220, 0, 220, 255};  // magenta
 constexpr Color kEventEndColor{140, 70, 0, 255};     // brown
 constexpr Color kEventHitColor{0, 90, 200, 255};     // steel blue
+constexpr Color kEventLimitColor{0, 160, 110, 255};  // sea green (5.9)
 
 // A fresh event is drawn this large; an old one shrinks towards kOldEventSize.
 constexpr double kFreshEventSize = 9.0;  // px
@@ -30,12 +31,18 @@ void eventCross(browser::Canvas& canvas, Vec2 at, double reach, Color color) {
     draw::line(canvas, at + Vec2{-reach, reach}, at + Vec2{reach, -reach}, color);
 }
 
+// A limit's mark: a diamond, a shape no contact event has, its corners `reach` px from `at`.
+void eventDiamond(browser::Canvas& canvas, Vec2 at, double reach, Color color) {
+    const Vec2 corners[] = {at + Vec2{0, -reach}, at + Vec2{reach, 0}, at + Vec2{0, reach}, at + Vec2{-reach, 0}};
+    for (int i = 0; i < 4; ++i) draw::line(canvas, corners[i], corners[(i + 1) % 4], color);
+}
+
 }  // namespace
 
 void drawEvents(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& core,
                 std::vector<browser::LegendEntry>& legend) {
     const ContactEvents& events = core.events();
-    int begins = 0, ends = 0, hits = 0;
+    int begins = 0, ends = 0, hits = 0, limits = 0;
     for (const ContactEvent& event : events.recent()) {
         const double size = eventSize(events.step() - event.step);
         switch (event.kind) {
@@ -53,7 +60,15 @@ void drawEvents(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
                              draw::fixed(event.speed, 0) + " px/s");
                 ++hits;
                 break;
-            case EventKind::limit: break;  // 5.9: the joints' layer draws each limit
+            case EventKind::limit:
+                // 5.9: at the joint's anchor, with the speed it closed at: rad/s for an
+                // angle (its normal is (0, 0)), px/s for a slider's travel or a rope's length.
+                eventDiamond(canvas, event.point, size, kEventLimitColor);
+                labels.place(canvas, event.point + draw::kLabelOffset, kEventLimitColor,
+                             event.normal == Vec2{} ? draw::fixed(event.speed, 2) + " rad/s"
+                                                    : draw::fixed(event.speed, 0) + " px/s");
+                ++limits;
+                break;
         }
     }
     for (std::size_t i = 0; i < core.objectCount(); ++i) {
@@ -63,6 +78,7 @@ void drawEvents(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
     legend.push_back({kEventBeginColor, "begin: a pair starts touching"});
     legend.push_back({kEventEndColor, "end: it stops (x)"});
     legend.push_back({kEventHitColor, "hit: a begin faster than " + draw::fixed(kHitSpeed, 0) + " px/s"});
+    legend.push_back({kEventLimitColor, "limit: a joint's limit holds (diamond): " + std::to_string(limits)});
     legend.push_back({kEventBeginColor, "in 0.5 s: begins " + std::to_string(begins) + ", ends " +
                                             std::to_string(ends) + ", hits " + std::to_string(hits) +
                                             "; touching now " + std::to_string(events.touchingCount())});

@@ -5,6 +5,8 @@
 //  - A begin: a ring at the middle of the overlap where the pair was first found.
 //  - An end: a cross where the pair last touched.
 //  - A hit: a larger ring round its begin, and the speed the surfaces met at.
+//  - A limit (5.9): a diamond at the joint's anchor where its limit began to hold, and
+//    the speed it closed at (rad/s for an angle, px/s for a slider's or a rope's).
 //  - A sensor (rigid_shape.h): its outline is the page's (green); the overlay names it.
 //  - The legend counts the events of the last half second, kind by kind, and the pairs
 //    touching now.

@@ -18,10 +18,6 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 // this step (the rod's length is then 0 px to rounding): its rows wait for the next.
 constexpr double kShortestLink = 1e-9;  // px
 
-// A point fixed in a body's frame, turned as the body is now.
-Vec2 toWorld(Vec2 local, double angle) { return local.rotate({}, angle); }
-Vec2 toBody(Vec2 world, double angle) { return world.rotate({}, -angle); }
-
 // The velocity a spin w gives a point at arm r from the centre: w x r.
 Vec2 spinAt(double w, Vec2 arm) { return {-w * arm.y, w * arm.x}; }
 
@@ -43,14 +39,14 @@ double angleOf(const JointDefinition& joint, const Body& a, const Body& b) {
 
 // A point of a body's frame in the world's: a shape works out its angle's cosine and
 // sine each time, the positional passes' Placed keeps them (joints.h).
-Vec2 toWorld(Vec2 local, const RigidShape& body) { return toWorld(local, body.angle()); }
-Vec2 toWorld(Vec2 local, const Joints::Placed& body) { return body.toWorld(local); }
+Vec2 inWorld(Vec2 local, const RigidShape& body) { return toWorld(local, body.angle()); }
+Vec2 inWorld(Vec2 local, const Joints::Placed& body) { return body.toWorld(local); }
 
 template <typename Body>
 Frame frameOf(const JointDefinition& joint, const Body& a, const Body& b) {
     Frame frame;
-    frame.arm_a = toWorld(joint.local_a, a);
-    frame.arm_b = toWorld(joint.local_b, b);
+    frame.arm_a = inWorld(joint.local_a, a);
+    frame.arm_b = inWorld(joint.local_b, b);
     frame.gap = (b.center() + frame.arm_b) - (a.center() + frame.arm_a);
     frame.angle = angleOf(joint, a, b);
     return frame;
@@ -59,7 +55,7 @@ Frame frameOf(const JointDefinition& joint, const Body& a, const Body& b) {
 // A slider's axis as a's turn has carried it, and the direction across it.
 template <typename Body>
 Vec2 axisOf(const JointDefinition& joint, const Body& a) {
-    return toWorld(joint.local_axis, a);
+    return inWorld(joint.local_axis, a);
 }
 Vec2 across(Vec2 axis) { return {-axis.y, axis.x}; }
 

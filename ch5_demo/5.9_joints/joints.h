@@ -40,6 +40,12 @@ class ContactEvents;
 
 enum class JointType { revolute, distance, weld, prismatic };
 
+// A point fixed in a body's frame (px from its centre, as if the body were unturned)
+// where it is now that the body has turned by `angle`, and back: a joint's anchors and
+// axis, and the mouse joint's grabbed point (mouse_joint.h), are kept in the body's frame.
+inline Vec2 toWorld(Vec2 local, double angle) { return local.rotate({}, angle); }
+inline Vec2 toBody(Vec2 world, double angle) { return world.rotate({}, -angle); }
+
 // A range a joint keeps between two numbers: an angle (rad), a translation or a length
 // (px). Not there: no limit.
 struct JointRange {

@@ -6,6 +6,9 @@
 #include <string>
 #include <tuple>
 
+#include "kinematic_drawing.h"
+#include "mouse_joint.h"
+
 namespace engine {
 
 namespace {
@@ -105,7 +108,7 @@ JointMark markOf(const JointDefinition& joint, const RigidShape& a, const RigidS
             }
             break;
         case JointType::prismatic:
-            mark.axis = joint.local_axis.rotate({}, a.angle());
+            mark.axis = toWorld(joint.local_axis, a.angle());
             if (joint.limit) {
                 mark.travel = *joint.limit;
                 mark.travel_limited = true;
@@ -212,12 +215,16 @@ void drawJoints(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
     legend.push_back({kLimitColor, "limit: angle arc, slider's range, rope"});
     legend.push_back({kErrorColor, "error > " + draw::fixed(kShownError, 0) + " px (ring): " + std::to_string(past) +
                                        ", largest " + draw::fixed(largest, 2) + " px"});
+    // The count of each kind on two lines: on one it is wider than a column of the legend.
+    const auto count = [&](JointType type) { return std::to_string(kinds[static_cast<std::size_t>(type)]); };
+    legend.push_back({kLinkColor, "joints " + std::to_string(marks.size()) + ": revolute " +
+                                      count(JointType::revolute) + ", distance " + count(JointType::distance) + ","});
+    legend.push_back({kLinkColor, "  weld " + count(JointType::weld) + ", prismatic " + count(JointType::prismatic)});
+    // What the page itself draws beyond the book's blue, red, gray and green, named here
+    // where a reader of the joints looks for colours: the kinematic bodies and the mouse.
     legend.push_back(
-        {kLinkColor, "joints " + std::to_string(marks.size()) + ": revolute " +
-                         std::to_string(kinds[static_cast<std::size_t>(JointType::revolute)]) + ", distance " +
-                         std::to_string(kinds[static_cast<std::size_t>(JointType::distance)]) + ", weld " +
-                         std::to_string(kinds[static_cast<std::size_t>(JointType::weld)]) + ", prismatic " +
-                         std::to_string(kinds[static_cast<std::size_t>(JointType::prismatic)])});
+        {kKinematicColor, "kinematic body; arrows: its motion in " + draw::fixed(kKinematicMotionShown, 0) + " s"});
+    legend.push_back({MouseJoint::kLineColor, "mouse joint: grabbed point to pointer"});
 }
 
 }  // namespace engine

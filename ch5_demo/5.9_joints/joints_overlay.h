@@ -12,7 +12,8 @@
 //    anchors drawn and a ring round it, and for the kLabelledErrors largest, the size in
 //    px written beside it;
 //  - in the legend, how many joints of each kind, how many are past kShownError and the
-//    largest error of all.
+//    largest error of all; and the two colours the page draws for 5.9 whatever the
+//    overlay: a kinematic body's (kinematic_drawing.h) and the mouse joint's line.
 
 #include <cstddef>
 #include <optional>

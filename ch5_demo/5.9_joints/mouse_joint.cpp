@@ -4,6 +4,8 @@
 #include <numbers>
 
 #include "circle.h"
+#include "contact_solver.h"
+#include "joints.h"
 #include "narrow_phase.h"
 
 namespace engine {
@@ -15,9 +17,6 @@ namespace {
 constexpr double kProbeRadius = 0.5;  // px
 constexpr double kDotRadius = 3.0;    // px, the ends of the line drawn
 
-// Where the shape `shape` holds a point, px from its centre and unturned, now.
-Vec2 turned(Vec2 local, double angle) { return local.rotate({}, angle); }
-
 }  // namespace
 
 std::optional<std::size_t> MouseJoint::grab(ShapeList shapes, Vec2 point) {
@@ -26,23 +25,28 @@ std::optional<std::size_t> MouseJoint::grab(ShapeList shapes, Vec2 point) {
         const RigidShape& shape = *shapes[k];
         if (!shape.isDynamic() || !narrowPhase(probe, shape)) continue;
         body_ = shape.id();
-        local_anchor_ = turned(point - shape.center(), -shape.angle());
+        local_anchor_ = toBody(point - shape.center(), shape.angle());
         target_ = point;
+        total_ = {};
         return k;
     }
     return std::nullopt;
 }
 
 Vec2 MouseJoint::grabbedPoint(const RigidShape& shape) const {
-    return shape.center() + turned(local_anchor_, shape.angle());
+    return shape.center() + toWorld(local_anchor_, shape.angle());
 }
 
-void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
-    if (body_ == 0) return;
+bool MouseJoint::begin(ShapeList shapes, const WorldSettings& world) {
+    step_.reset();
+    if (body_ == 0) return false;
     const auto held = std::find_if(shapes.begin(), shapes.end(), [&](const auto& s) { return s->id() == body_; });
-    if (held == shapes.end() || !(*held)->isDynamic()) return release();  // removed, or made static by a key
-    RigidShape& shape = **held;
-    if (shape.sleep().asleep || !world.movement) return;
+    if (held == shapes.end() || !(*held)->isDynamic()) {  // removed, or made static by a key
+        release();
+        return false;
+    }
+    const RigidShape& shape = **held;
+    if (shape.sleep().asleep || !world.movement) return false;
 
     const double h = world.dt;
     const double inv_mass = shape.invMass();
@@ -56,23 +60,73 @@ void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
     const double gamma = 1.0 / (h * (damping + h * stiffness));
     const double beta = h * stiffness / (damping + h * stiffness);
 
-    const Vec2 arm = turned(local_anchor_, shape.angle());
-    const Vec2 error = shape.center() + arm - target_;  // C, px
-    const double w = shape.angularVelocity();
-    const Vec2 point_velocity = shape.velocity() + Vec2{-w * arm.y, w * arm.x};
+    Step step;
+    step.index = static_cast<std::size_t>(held - shapes.begin());
+    step.arm = toWorld(local_anchor_, shape.angle());
+    step.bias = (shape.center() + step.arm - target_) * (beta / h);  // C = p - target, px
+    step.gamma = gamma;
     // K + gamma 1: a unit impulse P at the arm r changes the point's velocity by P / m
     // and, through the turn (r x P) / I, by (r x P) / I times (-r.y, r.x).
-    const double k11 = inv_mass + inv_inertia * arm.y * arm.y + gamma;
-    const double k12 = -inv_inertia * arm.x * arm.y;
-    const double k22 = inv_mass + inv_inertia * arm.x * arm.x + gamma;
-    const double determinant = k11 * k22 - k12 * k12;  // > 0: K is positive semi-definite, gamma > 0
-    const Vec2 wanted = (point_velocity + error * (beta / h)) * -1.0;
-    Vec2 impulse{(k22 * wanted.x - k12 * wanted.y) / determinant, (k11 * wanted.y - k12 * wanted.x) / determinant};
-    const double most = kMaxPullAcceleration * mass * h;
-    if (impulse.length() > most) impulse = impulse * (most / impulse.length());
+    step.k11 = inv_mass + inv_inertia * step.arm.y * step.arm.y + gamma;
+    step.k12 = -inv_inertia * step.arm.x * step.arm.y;
+    step.k22 = inv_mass + inv_inertia * step.arm.x * step.arm.x + gamma;
+    step.most = kMaxPullAcceleration * mass * h;
+    step_ = step;
+    return true;
+}
 
-    shape.setVelocity(shape.velocity() + impulse * inv_mass);
-    shape.setAngularVelocity(w + arm.cross(impulse) * inv_inertia);
+void MouseJoint::solveOn(SolverBody& body) {
+    const Step& step = *step_;
+    const double w = body.velocity.angular;
+    const Vec2 point_velocity = body.velocity.linear + Vec2{-w * step.arm.y, w * step.arm.x};
+    // The total already given counts as the spring's own give (gamma): the iterations
+    // stop changing it when it is the implicit spring's impulse for the step.
+    const Vec2 wanted = (point_velocity + step.bias + total_ * step.gamma) * -1.0;
+    const double determinant = step.k11 * step.k22 - step.k12 * step.k12;  // > 0: K is semi-definite, gamma > 0
+    const Vec2 change{(step.k22 * wanted.x - step.k12 * wanted.y) / determinant,
+                      (step.k11 * wanted.y - step.k12 * wanted.x) / determinant};
+    Vec2 total = total_ + change;
+    if (total.length() > step.most) total = total * (step.most / total.length());
+    const Vec2 applied = total - total_;
+    total_ = total;
+    body.velocity.linear += applied * body.inv_mass;
+    body.velocity.angular += step.arm.cross(applied) * body.inv_inertia;
+}
+
+void MouseJoint::apply(ShapeList shapes, const WorldSettings& world) {
+    if (!begin(shapes, world)) return;
+    RigidShape& shape = *shapes[step_->index];
+    // The passes keep nothing from one step to the next: the pull starts from 0 each step,
+    // and one solve is exact for the shape alone.
+    total_ = {};
+    // The spin's damping, implicitly as the spring: dw/dt = -kSpinDamping w over h.
+    SolverBody body{.velocity = {shape.velocity(), shape.angularVelocity() / (1.0 + world.dt * kSpinDamping)},
+                    .pseudo = {},
+                    .inv_mass = shape.invMass(),
+                    .inv_inertia = world.rotation ? shape.invInertia() : 0.0};
+    solveOn(body);
+    shape.setVelocity(body.velocity.linear);
+    shape.setAngularVelocity(body.velocity.angular);
+    step_.reset();
+}
+
+void MouseJoint::prepare(ShapeList shapes, std::vector<SolverBody>& bodies, const WorldSettings& world) {
+    if (!begin(shapes, world)) {
+        total_ = {};
+        return;
+    }
+    SolverBody& body = bodies[step_->index];
+    body.velocity.angular /= 1.0 + world.dt * kSpinDamping;
+    if (!world.warm_starting) total_ = {};
+    // The last step's total, given again (capped to this step's most): the iterations
+    // start at the answer instead of at 0, as the contacts' and the joints' do.
+    if (total_.length() > step_->most) total_ = total_ * (step_->most / total_.length());
+    body.velocity.linear += total_ * body.inv_mass;
+    body.velocity.angular += step_->arm.cross(total_) * body.inv_inertia;
+}
+
+void MouseJoint::solve(std::vector<SolverBody>& bodies) {
+    if (step_) solveOn(bodies[step_->index]);
 }
 
 void MouseJoint::draw(browser::Canvas& context, ShapeList shapes) const {
@@ -80,7 +134,7 @@ void MouseJoint::draw(browser::Canvas& context, ShapeList shapes) const {
     const auto held = std::find_if(shapes.begin(), shapes.end(), [&](const auto& s) { return s->id() == body_; });
     if (held == shapes.end()) return;
     const Vec2 grabbed = grabbedPoint(**held);
-    context.setStrokeStyle(browser::colors::kOrange);
+    context.setStrokeStyle(kLineColor);
     context.beginPath();
     context.moveTo(grabbed.x, grabbed.y);
     context.lineTo(target_.x, target_.y);

@@ -55,7 +55,8 @@
 // then the distance or EPA's depth; and on the canvas the two closest points.
 //
 // 5.9's joints add theirs (joints_overlay.h): anchors, links, limits and each joint's
-// error in px.
+// error in px, and the legend names the page's kinematic bodies and mouse line; its
+// limit events join 5.7's (events_overlay.h).
 
 #include <cstddef>
 
@@ -68,8 +69,8 @@ namespace engine {
 // every layer on: the page keeps a band for that many under it (page.h's
 // Document::legend_entries), the second in a run where every layer can come on, so that
 // every picture of a run has one height, whichever layers are on.
-inline constexpr std::size_t kOwnLegendEntries = 4;
-inline constexpr std::size_t kLegendEntries = 39;
+inline constexpr std::size_t kOwnLegendEntries = 7;
+inline constexpr std::size_t kLegendEntries = 43;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

@@ -155,13 +155,13 @@ void Physics::keepResponses(bool keep) {
 
 PairResponse* Physics::responseOf(PairKey pair) { return keep_responses_ ? &responses_[pair] : nullptr; }
 
-void Physics::collision(ShapeList shapes, const WorldSettings& world) {
+void Physics::collision(ShapeList shapes, const WorldSettings& world, MouseJoint* mouse) {
     collisions_.clear();
     responses_.clear();
     if (world.broad_phase != broad_phase_.kind()) broad_phase_ = BroadPhase(world.broad_phase);
     islands_.startStep(shapes);
     if (world.solver == SolverKind::sequential_impulse) {
-        return contact_solver_.step(shapes, broad_phase_, islands_, events_, joints_, world, collisions_);
+        return contact_solver_.step(shapes, broad_phase_, islands_, events_, joints_, world, collisions_, mouse);
     }
     broad_phase_.startStep(shapes, world.relaxation_iterations);
     for (int pass = 0; pass < world.relaxation_iterations; ++pass) {

@@ -74,7 +74,9 @@ public:
     // known is not tested again (broad_phase.h), and a pass that changed nothing is the
     // step's last (physics.cpp). With the sequential impulse solver: one look at every
     // pair, then the solver (contact_solver.h).
-    void collision(ShapeList shapes, const WorldSettings& world);
+    // 5.9: the sequential impulses also solve the mouse's pull, `mouse`, in their
+    // iterations (the book's passes leave it to the core, which pulls before them).
+    void collision(ShapeList shapes, const WorldSettings& world, MouseJoint* mouse = nullptr);
     const std::vector<Collision>& collisions() const { return collisions_; }
 
     // The overlay's record. While it is kept, each step adds up what its passes did to

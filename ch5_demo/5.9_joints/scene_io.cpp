@@ -410,7 +410,7 @@ void buildScene(Core& core, const Scene& scene) {
                                           .max_torque = joint.max_motor_torque};
         }
         // The axis as the scene gives it, in the world; kept in a's frame, to turn with a.
-        if (joint.type == JointType::prismatic) definition.local_axis = joint.axis.normalize().rotate({}, -a.angle());
+        if (joint.type == JointType::prismatic) definition.local_axis = toBody(joint.axis.normalize(), a.angle());
         definition.collide_connected = joint.collide_connected;
         core.join(definition);
     }
