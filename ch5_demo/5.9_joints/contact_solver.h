@@ -133,8 +133,9 @@ private:
     void indexLastContacts(ShapeList shapes, std::uint64_t wakes);
     void prepare(ShapeList shapes, const WorldSettings& world);
     void warmStart();
-    void solveVelocities(int iterations, bool with_removal, Joints& joints);
-    void relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints);
+    void solveVelocities(int iterations, bool with_removal, Joints& joints, bool relax_joints = false);
+    void relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints, int iterations,
+                      bool relax_joints);
     void solvePair(Contact& contact);
     void solvePositions(ShapeList shapes, const WorldSettings& world);
 

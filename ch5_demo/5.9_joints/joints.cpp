@@ -144,6 +144,20 @@ Softness softness(double hertz, double damping_ratio, double dt) {
     return {.bias_rate = omega / a1, .mass_scale = a2 * a3, .impulse_scale = a3};
 }
 
+// A soft row is implicit Euler's spring only where the iterations reach its fixed
+// point. A chain's pins share their bodies, and 8 Gauss-Seidel sweeps over a chain with
+// a 10:1 load leave them far from it; then a stiff row (60 Hz at 60 steps a second asks
+// back 61 % of its error each step, a 30 Hz one 44 %) overshoots the way an explicit
+// spring does, and the chain bounced ever higher (README.md, "Soft constraints"). So
+// the frequency is capped by the step's rate, as Box2D v3 caps its contacts' at a
+// quarter of its sub-step rate and makes its joints twice as stiff as those: at most
+// half the step's rate. A larger joint_hertz is taken, and runs at the cap.
+double jointHertz(const WorldSettings& world, double dt) {
+    if (world.joint_hertz <= 0.0 || dt <= 0.0) return world.joint_hertz;
+    constexpr double kShareOfStepRate = 0.5;
+    return std::min(world.joint_hertz, kShareOfStepRate / dt);
+}
+
 void Joints::add(const Joint& joint) {
     joints_.push_back(joint);
     const JointDefinition& added = joint.definition;
@@ -283,7 +297,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         }
         return placed_[i];
     };
-    const Softness stiff = softness(world.joint_hertz, world.joint_damping_ratio, world.dt);
+    const Softness stiff = softness(jointHertz(world, world.dt), world.joint_damping_ratio, world.dt);
+    soft_ = false;
     for (const std::size_t k : order_) {
         const auto [a, b] = *places_[k];
         const RigidShape& shape_a = *shapes[a];
@@ -313,7 +328,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
             return made;
         };
         // An equation C = 0, pulled back softly.
-        const auto equation = [&](Row made, double error, Softness soft) {
+        const auto equation = [&](Row made, double error, Softness soft, bool relaxes) {
+            made.relaxes = relaxes;
             made.bias = soft.bias_rate * error;
             made.mass_scale = soft.mass_scale;
             made.impulse_scale = soft.impulse_scale;
@@ -331,6 +347,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 made.bias = error / world.dt;
             } else {
                 made.bias = stiff.bias_rate * error;
+                made.relaxes = true;
                 made.mass_scale = stiff.mass_scale;
                 made.impulse_scale = stiff.impulse_scale;
             }
@@ -375,7 +392,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 pin();
                 break;
             case JointType::weld:
-                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff, true);
                 pin();
                 break;
             case JointType::prismatic: {
@@ -391,8 +408,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                           definition.limit->upper - translation);
                 }
                 equation(row(normal, arm_a.cross(normal), frame.arm_b.cross(normal), &JointImpulses::across),
-                         normal.dot(frame.gap), stiff);
-                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
+                         normal.dot(frame.gap), stiff, true);
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff, true);
                 break;
             }
             case JointType::distance: {
@@ -402,9 +419,9 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 const double turn_a = frame.arm_a.cross(along), turn_b = frame.arm_b.cross(along);
                 if (definition.hertz > 0.0) {
                     equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length,
-                             softness(definition.hertz, definition.damping_ratio, world.dt));
+                             softness(definition.hertz, definition.damping_ratio, world.dt), false);
                 } else if (!definition.length_range) {
-                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length, stiff);
+                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length, stiff, true);
                 }
                 if (definition.length_range) {
                     limit(row(along, turn_a, turn_b, &JointImpulses::lower), length - definition.length_range->lower);
@@ -416,6 +433,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         }
         prepared_.push_back(prepared);
     }
+    soft_ = jointHertz(world, world.dt) > 0.0 && !prepared_.empty();
 }
 
 namespace {
@@ -454,7 +472,11 @@ void Joints::warmStart(std::vector<SolverBody>& bodies) const {
 // Gauss-Seidel, as the contacts: each row in turn gets the impulse that puts its own
 // speed right (less the soft share), as the rows before it left the bodies; the pin
 // last, so that of all a joint's rows it is the one an iteration ends on.
-void Joints::solve(std::vector<SolverBody>& bodies) {
+void Joints::solve(std::vector<SolverBody>& bodies) { iterate<false>(bodies); }
+void Joints::relax(std::vector<SolverBody>& bodies) { iterate<true>(bodies); }
+
+template <bool kRelax>
+void Joints::iterate(std::vector<SolverBody>& bodies) {
     for (const Prepared& prepared : prepared_) {
         JointImpulses& totals = joints_[prepared.joint].impulses;
         SolverBody& a = bodies[prepared.a];
@@ -465,7 +487,9 @@ void Joints::solve(std::vector<SolverBody>& bodies) {
                                  row.turn_b * b.velocity.angular - row.turn_a * a.velocity.angular;
             double& total = totals.*row.total;
             const double impulse =
-                -row.mass_scale * row.mass * (speed - row.target_speed + row.bias) - row.impulse_scale * total;
+                kRelax && row.relaxes
+                    ? -row.mass * (speed - row.target_speed)
+                    : -row.mass_scale * row.mass * (speed - row.target_speed + row.bias) - row.impulse_scale * total;
             const double clamped = std::clamp(total + impulse, row.lowest, row.highest);
             pushRow(a, b, row.direction, row.turn_a, row.turn_b, clamped - total);
             total = clamped;
@@ -476,14 +500,14 @@ void Joints::solve(std::vector<SolverBody>& bodies) {
         // share, stops it: K impulse = -(speed + bias), K the pin's 2 x 2 effective mass.
         const Vec2 speed = b.velocity.linear + spinAt(b.velocity.angular, pin.arm_b) - a.velocity.linear -
                            spinAt(a.velocity.angular, pin.arm_a);
-        const Vec2 wanted = speed + pin.bias;
+        const Vec2 wanted = kRelax ? speed : speed + pin.bias;
         const Vec2 solved{pin.inverse11 * wanted.x + pin.inverse12 * wanted.y,
                           pin.inverse12 * wanted.x + pin.inverse22 * wanted.y};
         // A rigid pin (the world's joint_hertz 0) keeps the whole of it: its mass scale 1
         // and impulse scale 0 would change nothing but the time it takes, and this is the
         // solver's innermost line.
         const Vec2 impulse =
-            pin.rigid ? -solved : solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
+            pin.rigid || kRelax ? -solved : solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
         pushPin(a, b, pin.arm_a, pin.arm_b, impulse);
         totals.point += impulse;
     }
@@ -613,7 +637,11 @@ void Joints::Placed::rotate(double turn) {
 }
 
 void Joints::correctPositions(ShapeList shapes, const WorldSettings& world) {
-    if (!world.positional_correction || !world.movement) return;
+    // Soft joints are left to their springs: a soft row holds a load only where its
+    // error has grown to pull with it (C = F / (m w^2)), and the passes would close that
+    // error after every step, so that each step's bias asked for speed again: a bob at
+    // rest on a soft pin kept g h / a2 of velocity (0.52 px/s at 2000 px/s^2) down it.
+    if (!world.positional_correction || !world.movement || jointHertz(world, world.dt) > 0.0) return;
     const bool rotation = world.rotation;
     // The passes move each body's centre and angle alone, and each shape is put where
     // its body ended once, after the last pass: turning a rectangle turns its four
