@@ -62,29 +62,14 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& isl
         joints.warmStart(bodies_);
         warmStart();
     }
-    // Soft joints (joints.h): the biased iterations' velocities move the shapes, and as
-    // many relax iterations again, with no bias, take the speed the bias asked for back
-    // out of the velocities the bodies keep (Box2D v3 runs one relax iteration after
-    // each sub-step's biased one). Left in, that speed is energy: a chain of soft pins
-    // with a 10:1 load at 8 iterations bounced ever higher. The contacts join them, with
-    // no speed to remove overlap, as in the relaxation after Baumgarte (relaxAndMove).
-    const int soft_relax = world.velocity_iterations;
     switch (world.position_method) {
-        case PositionMethod::baumgarte:
-            solveVelocities(world.velocity_iterations, true, joints);
-            if (joints.soft()) relaxAndMove(shapes, world, joints, soft_relax, true);
-            break;
+        case PositionMethod::baumgarte: solveVelocities(world.velocity_iterations, true, joints); break;
         case PositionMethod::relax:
             solveVelocities(world.velocity_iterations, true, joints);
-            if (joints.soft()) {
-                relaxAndMove(shapes, world, joints, std::max(world.position_iterations, soft_relax), true);
-            } else {
-                relaxAndMove(shapes, world, joints, world.position_iterations, false);
-            }
+            relaxAndMove(shapes, world, joints);
             break;
         case PositionMethod::split_impulse:
             solveVelocities(world.velocity_iterations, false, joints);
-            if (joints.soft()) relaxAndMove(shapes, world, joints, soft_relax, true);
             solvePositions(shapes, world);
             break;
     }
@@ -296,19 +281,14 @@ void ContactSolver::warmStart() {
 // Gauss-Seidel over the contact points: each point in turn gets the impulse that puts
 // its own speed right, as the others' impulses have left it; repeated, the impulses
 // settle on values that suit all the points together.
-void ContactSolver::solveVelocities(int iterations, bool with_removal, Joints& joints, bool relax_joints) {
+void ContactSolver::solveVelocities(int iterations, bool with_removal, Joints& joints) {
     for (Contact& contact : contacts_) {
         for (Point& point : contact.points) {
             point.target_speed = with_removal ? std::max(point.bounce_speed, point.removal_speed) : point.bounce_speed;
         }
     }
     for (int iteration = 0; iteration < iterations; ++iteration) {
-        // The joints first, as Box2D: the contacts have the last word.
-        if (relax_joints) {
-            joints.relax(bodies_);
-        } else {
-            joints.solve(bodies_);
-        }
+        joints.solve(bodies_);  // the joints first, as Box2D: the contacts have the last word
         if (mouse_ != nullptr) mouse_->solve(bodies_);
         for (Contact& contact : contacts_) {
             SolverBody& a = bodies_[contact.a];
@@ -385,11 +365,10 @@ void ContactSolver::solvePair(Contact& contact) {
 // step). The shapes are moved by the difference, so that overall they move as the
 // first velocities say, but keep the second ones: the overlap is gone, and no energy
 // was added to remove it.
-void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints, int iterations,
-                                 bool relax_joints) {
+void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints) {
     std::vector<Motion> with_removal(bodies_.size());
     for (std::size_t i = 0; i < bodies_.size(); ++i) with_removal[i] = bodies_[i].velocity;
-    solveVelocities(iterations, false, joints, relax_joints);
+    solveVelocities(world.position_iterations, false, joints);
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const SolverBody& body = bodies_[i];
         if (body.inv_mass == 0.0) continue;

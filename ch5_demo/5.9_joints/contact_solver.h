@@ -133,9 +133,8 @@ private:
     void indexLastContacts(ShapeList shapes, std::uint64_t wakes);
     void prepare(ShapeList shapes, const WorldSettings& world);
     void warmStart();
-    void solveVelocities(int iterations, bool with_removal, Joints& joints, bool relax_joints = false);
-    void relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints, int iterations,
-                      bool relax_joints);
+    void solveVelocities(int iterations, bool with_removal, Joints& joints);
+    void relaxAndMove(ShapeList shapes, const WorldSettings& world, Joints& joints);
     void solvePair(Contact& contact);
     void solvePositions(ShapeList shapes, const WorldSettings& world);
 

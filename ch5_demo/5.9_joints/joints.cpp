@@ -298,7 +298,6 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         return placed_[i];
     };
     const Softness stiff = softness(jointHertz(world, world.dt), world.joint_damping_ratio, world.dt);
-    soft_ = false;
     for (const std::size_t k : order_) {
         const auto [a, b] = *places_[k];
         const RigidShape& shape_a = *shapes[a];
@@ -328,8 +327,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
             return made;
         };
         // An equation C = 0, pulled back softly.
-        const auto equation = [&](Row made, double error, Softness soft, bool relaxes) {
-            made.relaxes = relaxes;
+        const auto equation = [&](Row made, double error, Softness soft) {
             made.bias = soft.bias_rate * error;
             made.mass_scale = soft.mass_scale;
             made.impulse_scale = soft.impulse_scale;
@@ -347,7 +345,6 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 made.bias = error / world.dt;
             } else {
                 made.bias = stiff.bias_rate * error;
-                made.relaxes = true;
                 made.mass_scale = stiff.mass_scale;
                 made.impulse_scale = stiff.impulse_scale;
             }
@@ -392,7 +389,7 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 pin();
                 break;
             case JointType::weld:
-                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff, true);
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
                 pin();
                 break;
             case JointType::prismatic: {
@@ -408,8 +405,8 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                           definition.limit->upper - translation);
                 }
                 equation(row(normal, arm_a.cross(normal), frame.arm_b.cross(normal), &JointImpulses::across),
-                         normal.dot(frame.gap), stiff, true);
-                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff, true);
+                         normal.dot(frame.gap), stiff);
+                equation(row({}, 1.0, 1.0, &JointImpulses::angular), frame.angle, stiff);
                 break;
             }
             case JointType::distance: {
@@ -419,9 +416,9 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
                 const double turn_a = frame.arm_a.cross(along), turn_b = frame.arm_b.cross(along);
                 if (definition.hertz > 0.0) {
                     equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length,
-                             softness(definition.hertz, definition.damping_ratio, world.dt), false);
+                             softness(definition.hertz, definition.damping_ratio, world.dt));
                 } else if (!definition.length_range) {
-                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length, stiff, true);
+                    equation(row(along, turn_a, turn_b, &JointImpulses::axial), length - definition.length, stiff);
                 }
                 if (definition.length_range) {
                     limit(row(along, turn_a, turn_b, &JointImpulses::lower), length - definition.length_range->lower);
@@ -433,7 +430,6 @@ void Joints::prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, co
         }
         prepared_.push_back(prepared);
     }
-    soft_ = jointHertz(world, world.dt) > 0.0 && !prepared_.empty();
 }
 
 namespace {
@@ -472,11 +468,7 @@ void Joints::warmStart(std::vector<SolverBody>& bodies) const {
 // Gauss-Seidel, as the contacts: each row in turn gets the impulse that puts its own
 // speed right (less the soft share), as the rows before it left the bodies; the pin
 // last, so that of all a joint's rows it is the one an iteration ends on.
-void Joints::solve(std::vector<SolverBody>& bodies) { iterate<false>(bodies); }
-void Joints::relax(std::vector<SolverBody>& bodies) { iterate<true>(bodies); }
-
-template <bool kRelax>
-void Joints::iterate(std::vector<SolverBody>& bodies) {
+void Joints::solve(std::vector<SolverBody>& bodies) {
     for (const Prepared& prepared : prepared_) {
         JointImpulses& totals = joints_[prepared.joint].impulses;
         SolverBody& a = bodies[prepared.a];
@@ -487,9 +479,7 @@ void Joints::iterate(std::vector<SolverBody>& bodies) {
                                  row.turn_b * b.velocity.angular - row.turn_a * a.velocity.angular;
             double& total = totals.*row.total;
             const double impulse =
-                kRelax && row.relaxes
-                    ? -row.mass * (speed - row.target_speed)
-                    : -row.mass_scale * row.mass * (speed - row.target_speed + row.bias) - row.impulse_scale * total;
+                -row.mass_scale * row.mass * (speed - row.target_speed + row.bias) - row.impulse_scale * total;
             const double clamped = std::clamp(total + impulse, row.lowest, row.highest);
             pushRow(a, b, row.direction, row.turn_a, row.turn_b, clamped - total);
             total = clamped;
@@ -500,14 +490,14 @@ void Joints::iterate(std::vector<SolverBody>& bodies) {
         // share, stops it: K impulse = -(speed + bias), K the pin's 2 x 2 effective mass.
         const Vec2 speed = b.velocity.linear + spinAt(b.velocity.angular, pin.arm_b) - a.velocity.linear -
                            spinAt(a.velocity.angular, pin.arm_a);
-        const Vec2 wanted = kRelax ? speed : speed + pin.bias;
+        const Vec2 wanted = speed + pin.bias;
         const Vec2 solved{pin.inverse11 * wanted.x + pin.inverse12 * wanted.y,
                           pin.inverse12 * wanted.x + pin.inverse22 * wanted.y};
         // A rigid pin (the world's joint_hertz 0) keeps the whole of it: its mass scale 1
         // and impulse scale 0 would change nothing but the time it takes, and this is the
         // solver's innermost line.
         const Vec2 impulse =
-            pin.rigid || kRelax ? -solved : solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
+            pin.rigid ? -solved : solved * -pin.soft.mass_scale - totals.point * pin.soft.impulse_scale;
         pushPin(a, b, pin.arm_a, pin.arm_b, impulse);
         totals.point += impulse;
     }

@@ -155,14 +155,6 @@ public:
     void prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world);
     void warmStart(std::vector<SolverBody>& bodies) const;
     void solve(std::vector<SolverBody>& bodies);
-    // Whether this step's joints are soft (the world's joint_hertz > 0, and a joint to
-    // solve): the contact solver then runs relax iterations after the biased ones.
-    bool soft() const { return soft_; }
-    // A relax iteration (Box2D v3's): each soft row solved hard and with no bias, so
-    // that the speed its bias asked for, which has moved the bodies, does not stay in
-    // them (README.md, "Soft constraints"). A spring's row, a motor and a limit not yet
-    // reached are solved as in the biased iterations.
-    void relax(std::vector<SolverBody>& bodies);
     // After the iterations, only while someone reads events: a limit event for each
     // side of a limit that holds now (its total impulse > 0: it stopped the joint from
     // passing within this step) and did not in the step before. Velocities untouched.
@@ -214,7 +206,6 @@ private:
         double bias = 0.0;          // the speed asked for to undo the error, bias_rate * C
         double mass_scale = 1.0;
         double impulse_scale = 0.0;
-        bool relaxes = false;  // a soft row of the world's joint_hertz: hard, with no bias, in relax
         double lowest = 0.0;
         double highest = 0.0;
         double JointImpulses::*total = nullptr;  // where the joint keeps its total
@@ -240,11 +231,7 @@ private:
         std::optional<Pin> pin;
     };
 
-    template <bool kRelax>
-    void iterate(std::vector<SolverBody>& bodies);
-
     std::vector<Joint> joints_;
-    bool soft_ = false;
     // Per joint, this step: the places of its bodies in the list (none: not solved).
     std::vector<std::optional<std::pair<std::size_t, std::size_t>>> places_;
     // The joints that have both bodies, in the order the solver meets them: farthest

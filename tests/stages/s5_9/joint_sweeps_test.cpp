@@ -192,11 +192,10 @@ TEST_CASE("s5_9: pendulums over gravity, size, shape, iterations and stiffness s
         const double t0 = 2 * kPi / w * (1.0 + kAmplitude * kAmplitude / 16.0);
         const double t_step = t0 * (1.0 - (w * kDt) * (w * kDt) / 24.0);  // symplectic Euler's own
         const double loss_bound = 2.0 * 2.0 * 0.75 * kPi * kAmplitude * kAmplitude * w * kDt;
-        const double gap_bound =
-            point.joint_hertz > 0 ? 2 * point.gravity *
-                                        (1 + 2 * (1 - std::cos(kAmplitude)) + std::sin(kAmplitude)) /
-                                        omegaSquared(point.joint_hertz)
-                                  : 0.01;
+        const double gap_bound = point.joint_hertz > 0
+                                     ? 2 * point.gravity * (1 + 2 * (1 - std::cos(kAmplitude)) + std::sin(kAmplitude)) /
+                                           omegaSquared(point.joint_hertz)
+                                     : 0.01;
         const double swing = bob.mass() * point.gravity * point.d * (1.0 - std::cos(kAmplitude));
 
         // Crossings of the vertical, either way: the first at T / 4, then every T / 2.
@@ -274,12 +273,8 @@ TEST_CASE("s5_9: hanging chains over link length, mass ratio, gravity and iterat
         double force_bound, stretch_bound;  // shares of the weight below and of 10 l
     };
     const Point points[] = {
-        {10, 1, 300, 8, 0, 0.01, 1e-4},
-        {20, 10, 300, 8, 0, 0.01, 1e-4},
-        {200, 10, 50, 8, 0, 0.01, 1e-4},
-        {50, 10, 2000, 16, 0, 0.01, 1e-4},
-        {50, 100, 2000, 32, 0, 0.05, 0.03},
-        {10, 100, 300, 32, 0, 0.05, 0.03},
+        {10, 1, 300, 8, 0, 0.01, 1e-4},         {20, 10, 300, 8, 0, 0.01, 1e-4},    {200, 10, 50, 8, 0, 0.01, 1e-4},
+        {50, 10, 2000, 16, 0, 0.01, 1e-4},      {50, 100, 2000, 32, 0, 0.05, 0.03}, {10, 100, 300, 32, 0, 0.05, 0.03},
         {50, 10, 300, 32, kSoftHertz, 0.01, 0},  // soft: the stretch bound from softChainSag
         {10, 1, 50, 32, kSoftHertz, 0.01, 0},
     };
@@ -627,8 +622,7 @@ TEST_CASE("s5_9: sliders over slope, gravity, box size, anchor and stiffness sli
 // soft row holds a steady load F (force) only where its error C has grown to make the
 // spring's pull: in the step's fixed point the biased velocity is 0, and with the
 // three numbers of `softness` that is C = F / (m w^2), m the row's effective mass and w
-// = 2 pi f, f the world's joint_hertz as capped by the step (jointHertz, joints.h). The
-// relax iterations then leave the bodies at rest, to rounding.
+// = 2 pi f, f the world's joint_hertz as capped by the step (jointHertz, joints.h).
 // A disc of mass m on a pin 50 px below a post: the pin's row along the rod has
 // effective mass m (the arm is along it: no turn), and carries m g, so the bob hangs
 // g / w^2 below the post's 50 px (0.0563 px at 2000 px/s^2 and 60 Hz, capped to 30 at
@@ -687,7 +681,8 @@ TEST_CASE("s5_9: soft chains over iterations, mass ratio and joint_hertz hang at
                 }
                 const Vec2 load_start = top + Vec2{0, kLink * kLinks + kLink / 2};
                 const engine::RigidShape& load = page.core.add(engine::Circle(load_start, kLink / 2, {.mass = ratio}));
-                page.core.join(engine::pinAt(engine::JointType::revolute, *before, load, top + Vec2{0, kLink * kLinks}));
+                page.core.join(
+                    engine::pinAt(engine::JointType::revolute, *before, load, top + Vec2{0, kLink * kLinks}));
                 const double w2 = omegaSquared(hertz);
                 const double sag = softChainSag(kLinks, ratio, kGravity, hertz);
                 const double gap_bound = 2 * (kLinks + ratio) * kGravity / (0.5 * w2);
