@@ -13,10 +13,12 @@
 // one step h, that spring gives each impulse three numbers:
 //     impulse = -mass_scale * m (Cdot + bias_rate * C) - impulse_scale * total
 // where m is the constraint's effective mass and total what the step applied so far. A
-// rod or a pin takes the world's joint_hertz and joint_damping_ratio: stiff, but soft
-// enough that an error is removed over a few steps rather than thrown back in one (which
-// would add energy, as Baumgarte's bias does). A distance joint's own "hertz" makes it a
-// real spring: the same three numbers, a softer f.
+// rod or a pin takes the world's joint_hertz (capped at half the step's rate,
+// jointHertz) and joint_damping_ratio: stiff, but soft enough that an error is removed
+// over a few steps rather than thrown back in one (which would add energy, as
+// Baumgarte's bias does); it then holds a load F where its error is F / (m w^2), and no
+// positional pass closes that. A distance joint's own "hertz" makes it a real spring:
+// the same three numbers, a softer f.
 //
 // Two bodies a joint joins do not collide with each other (a chain's links overlap at
 // their pins), unless it says "collide_connected" (Box2D's collideConnected). A joint
@@ -161,7 +163,8 @@ public:
     void reportLimits(ShapeList shapes, ContactEvents& events);
     // After the shapes have moved: world.position_iterations passes that move and turn
     // the bodies themselves until each rigid joint's anchors meet again (Box2D 2.4's
-    // last step for its joints), with positional correction on. A soft constraint pulls
+    // last step for its joints), with positional correction on and the joints hard
+    // (the world's joint_hertz 0: soft joints are left to their springs, joints.cpp). A soft constraint pulls
     // an error back over a few steps; but a link that turns by most of a radian in one
     // step (the end of a whipping chain) leaves its pin by more than any step's pull
     // can keep up with, because the velocities are a straight-line guess at an arc. The
