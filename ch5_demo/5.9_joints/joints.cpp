@@ -614,11 +614,22 @@ void Joints::Placed::rotate(double turn) {
         sine = std::sin(turned);
         return;
     }
+    const double t2 = turn * turn;
+    // Most turns a pass makes are tiny: under 0.01 rad the series' terms past t^5 and
+    // t^6 are below 2e-18, under a double's rounding, so they are left out.
+    constexpr double kTinyTurn = 0.01;  // rad
+    if (std::abs(turn) < kTinyTurn) {
+        const double tiny_sine = turn * (1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0)));
+        const double tiny_cosine = 1.0 - t2 * (1.0 / 2.0 - t2 * (1.0 / 24.0 - t2 * (1.0 / 720.0)));
+        const double turned_cosine = cosine * tiny_cosine - sine * tiny_sine;
+        sine = sine * tiny_cosine + cosine * tiny_sine;
+        cosine = turned_cosine;
+        return;
+    }
     // sin t = t - t^3/3! + ... - t^11/11!,  cos t = 1 - t^2/2! + ... + t^12/12!, nested.
     constexpr double k2 = 1.0 / 2.0, k3 = 1.0 / 6.0, k4 = 1.0 / 24.0, k5 = 1.0 / 120.0, k6 = 1.0 / 720.0;
     constexpr double k7 = 1.0 / 5040.0, k8 = 1.0 / 40320.0, k9 = 1.0 / 362880.0, k10 = 1.0 / 3628800.0;
     constexpr double k11 = 1.0 / 39916800.0, k12 = 1.0 / 479001600.0;
-    const double t2 = turn * turn;
     const double small_sine = turn * (1.0 - t2 * (k3 - t2 * (k5 - t2 * (k7 - t2 * (k9 - t2 * k11)))));
     const double small_cosine = 1.0 - t2 * (k2 - t2 * (k4 - t2 * (k6 - t2 * (k8 - t2 * (k10 - t2 * k12)))));
     const double turned_cosine = cosine * small_cosine - sine * small_sine;
