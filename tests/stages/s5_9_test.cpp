@@ -20,6 +20,7 @@
 #include "overlay.h"
 #include "overlay_draw.h"
 #include "rectangle.h"
+#include "s5_9/joint_measures.h"
 #include "scene_io.h"
 #include "stage_program.h"
 #include "world_fixture.h"
@@ -37,49 +38,11 @@ constexpr engine::PhysicalAttributes kStatic{.mass = 0.0};
 // The world the joints' tests run in: the sequential impulse solver, a stronger gravity
 // than the book's 20 px/s^2, nothing removed at the canvas's edge, and no sleep unless
 // a test wants it.
-engine::WorldSettings jointWorld() {
-    engine::WorldSettings world = engine::kBookWorld;
-    world.solver = engine::SolverKind::sequential_impulse;
-    world.gravity = {0, kG};
-    world.remove_out_of_bounds = false;
-    world.sleep = false;
-    return world;
-}
+engine::WorldSettings jointWorld() { return s5_9_measures::jointWorld(kG); }
 
-const engine::RigidShape& bodyOf(const engine::Core& core, engine::BodyId id);
-
-// The largest separation of any joint now, px.
-double largestSeparation(const engine::Core& core) {
-    double largest = 0.0;
-    for (const engine::Joint& joint : core.joints().all()) {
-        largest = std::max(largest, engine::separationOf(joint.definition, bodyOf(core, joint.definition.body_a),
-                                                         bodyOf(core, joint.definition.body_b)));
-    }
-    return largest;
-}
-
-// Kinetic plus potential energy of every moving body (y grows downward: U = -m g y).
-double energy(const engine::Core& core) {
-    double total = 0.0;
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        const engine::RigidShape& shape = core.object(i);
-        if (shape.isStatic()) continue;
-        const double inertia = 1.0 / shape.invInertia();
-        total += 0.5 * shape.mass() * shape.velocity().dot(shape.velocity()) +
-                 0.5 * inertia * shape.angularVelocity() * shape.angularVelocity() -
-                 shape.mass() * core.settings().gravity.dot(shape.center());
-    }
-    return total;
-}
-
-// The shape of id `id`.
-const engine::RigidShape& bodyOf(const engine::Core& core, engine::BodyId id) {
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        if (core.object(i).id() == id) return core.object(i);
-    }
-    FAIL("no body " << id);
-    return core.object(0);
-}
+using s5_9_measures::bodyOf;
+using s5_9_measures::energy;
+using s5_9_measures::largestSeparation;
 
 std::pair<Vec2, Vec2> anchorsOfJoint(const engine::Core& core, const engine::Joint& joint) {
     return engine::anchorsOf(joint.definition, bodyOf(core, joint.definition.body_a),
@@ -164,14 +127,7 @@ TEST_CASE("s5_9: a rigid pendulum keeps its energy over 10 s and swings with the
         }
         REQUIRE(crossings.size() >= 2);
         const double period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1) / 60.0;
-        const auto meanBetween = [&](double from, double to) {
-            double sum = 0.0;
-            int count = 0;
-            for (auto k = static_cast<std::size_t>(std::ceil(from)); k < static_cast<std::size_t>(to); ++k, ++count) {
-                sum += energies[k];
-            }
-            return sum / count;
-        };
+        const auto meanBetween = [&](double from, double to) { return s5_9_measures::meanBetween(energies, from, to); };
         const double drift =
             meanBetween(crossings[crossings.size() - 2], crossings.back()) - meanBetween(crossings[0], crossings[1]);
         const double expected = small_angle * (1.0 + start * start / 16.0);

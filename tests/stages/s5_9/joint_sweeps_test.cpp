@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "circle.h"
+#include "joint_measures.h"
 #include "joints.h"
 #include "rectangle.h"
 #include "world_fixture.h"
@@ -40,47 +41,16 @@ constexpr double kSoftHertz = 60.0;
 // removed at the canvas's edge, no sleep; `iterations` velocity iterations and the
 // world's joints hard (joint_hertz 0) or soft.
 engine::WorldSettings sweepWorld(double gravity, int iterations, double joint_hertz) {
-    engine::WorldSettings world = engine::kBookWorld;
-    world.solver = engine::SolverKind::sequential_impulse;
-    world.gravity = {0, gravity};
-    world.remove_out_of_bounds = false;
-    world.sleep = false;
+    engine::WorldSettings world = s5_9_measures::jointWorld(gravity);
     world.velocity_iterations = iterations;
     world.joint_hertz = joint_hertz;
     return world;
 }
 
-const engine::RigidShape& bodyOf(const engine::Core& core, engine::BodyId id) {
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        if (core.object(i).id() == id) return core.object(i);
-    }
-    FAIL("no body " << id);
-    return core.object(0);
-}
-
-double separationOf(const engine::Core& core, const engine::Joint& joint) {
-    return engine::separationOf(joint.definition, bodyOf(core, joint.definition.body_a),
-                                bodyOf(core, joint.definition.body_b));
-}
-
-double largestSeparation(const engine::Core& core) {
-    double largest = 0.0;
-    for (const engine::Joint& joint : core.joints().all()) largest = std::max(largest, separationOf(core, joint));
-    return largest;
-}
-
-// Kinetic plus potential energy of every moving body (y grows downward: U = -m g y).
-double energy(const engine::Core& core) {
-    double total = 0.0;
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        const engine::RigidShape& shape = core.object(i);
-        if (shape.isStatic()) continue;
-        total += 0.5 * shape.mass() * shape.velocity().dot(shape.velocity()) +
-                 0.5 * shape.angularVelocity() * shape.angularVelocity() / shape.invInertia() -
-                 shape.mass() * core.settings().gravity.dot(shape.center());
-    }
-    return total;
-}
+using s5_9_measures::bodyOf;
+using s5_9_measures::energy;
+using s5_9_measures::largestSeparation;
+using s5_9_measures::separationOf;
 
 bool allFinite(const engine::Core& core) {
     for (std::size_t i = 0; i < core.objectCount(); ++i) {
@@ -212,14 +182,7 @@ TEST_CASE("s5_9: pendulums over gravity, size, shape, iterations and stiffness s
         }
         REQUIRE(crossings.size() == 5);
         const double period = (crossings.back() - crossings.front()) / 2.0 * kDt;
-        const auto meanBetween = [&](double from, double to) {
-            double sum = 0.0;
-            int count = 0;
-            for (auto k = static_cast<std::size_t>(std::ceil(from)); k < static_cast<std::size_t>(to); ++k, ++count) {
-                sum += energies[k];
-            }
-            return sum / count;
-        };
+        const auto meanBetween = [&](double from, double to) { return s5_9_measures::meanBetween(energies, from, to); };
         const double drift = meanBetween(crossings[3], crossings[4]) - meanBetween(crossings[0], crossings[1]);
         const double off = period / t_step - 1.0;
         std::printf("  %6.0f %5.0f %-4s %2d %s | %.4f %.4f %+.3f (%.3f) %+.3f %.2e\n", point.gravity, point.d,
