@@ -31,25 +31,14 @@ done
 sleep 0.5
 xdotool mouseup 1
 sleep 0.3
-xdotool key space
-sleep 0.3
-xdotool key F12
-sleep 0.5
-xdotool key Escape
-for _ in $(seq 100); do kill -0 "$live_pid" 2>/dev/null || break; sleep 0.1; done
-status=0
-wait "$live_pid" || status=$?
-live_pid=''
-[[ $status -eq 0 ]] || fail "the live session ended with status $status"
+end_session
 
 script=$(cat session.keys)
 echo "recorded: $script"
 [[ "$script" =~ ^drag:310,390(\*[0-9]+)?/[0-9,/*]+@[0-9]+$ ]] || fail "not one drag from the box's (310, 390): \"$script\""
 [[ "$script" == *"/410,240"* ]] || fail "the drag does not reach (410, 240): \"$script\""
 
-saved=$(sed -n 's/^F12: saved frame \([0-9]*\) to \(s5_9_frame_[0-9]*\.png\)$/\1 \2/p' live_out.txt)
-read -r shown shot <<<"$saved" || true
-[[ -n "${shot:-}" && -f "$shot" ]] || fail "F12 saved no page"
+read_saved_page s5_9
 command=$(sed -n 's/^  //p' live_out.txt)
 [[ "$command" == *"--frames $((shown + 1)) "* ]] || fail "no replay command ending at the frame F12 saved: $command"
 # The command keeps the session's --dump live.csv: the replay writes its dump there anew.
@@ -58,9 +47,7 @@ bash -c "$command" >replay_out.txt 2>&1 || fail "the replay command failed: $com
 
 cmp session.csv live.csv >cmp.txt || fail "the replay's dump differs from the live session's: $(cat cmp.txt)"
 echo "the replay wrote the live session's dump, byte for byte ($(wc -l <session.csv) lines)"
-"$compare_png" --channel 0 --share 0 out/s5_9/final.png "$shot" >compare.txt ||
-  fail "the page F12 saved differs from the replay's final.png: $(cat compare.txt)"
-echo "F12 saved the replay's final.png, pixel for pixel"
+compare_with_saved s5_9
 # The box (object 1) went up: its highest centre over the session is far above where it
 # started (400), toward the pointer's 240.
 highest=$(awk -F, '$2 == 1 && ($6 < best || best == "") { best = $6 } END { print int(best) }' session.csv)

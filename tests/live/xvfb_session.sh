@@ -26,16 +26,7 @@ window=$(timeout 10 xdotool search --sync --name 's4_4' | head -n 1) || fail "no
 xdotool mousemove --window "$window" 20 20
 xdotool key --delay 100 f g h comma
 sleep 0.3
-xdotool key space   # paused: the page stands still while F12 saves it
-sleep 0.3
-xdotool key F12
-sleep 0.5
-xdotool key Escape
-for _ in $(seq 100); do kill -0 "$live_pid" 2>/dev/null || break; sleep 0.1; done
-status=0
-wait "$live_pid" || status=$?
-live_pid=''
-[[ $status -eq 0 ]] || fail "the live session ended with status $status"
+end_session   # Space pauses: the page stands still while F12 saves it
 
 script=$(cat session.keys)
 echo "recorded: $script"
@@ -47,14 +38,10 @@ done
 
 # What the session printed: "F12: saved frame N to s4_4_frame_NNNN.png", then what it
 # recorded, then the replay command, indented.
-saved=$(sed -n 's/^F12: saved frame \([0-9]*\) to \(s4_4_frame_[0-9]*\.png\)$/\1 \2/p' live_out.txt)
-read -r shown shot <<<"$saved" || true
-[[ -n "${shot:-}" && -f "$shot" ]] || fail "F12 saved no page"
+read_saved_page s4_4
 command=$(sed -n 's/^  //p' live_out.txt)
 [[ "$command" == *"--keys \"\$(cat session.keys)\" --frames $((shown + 1)) --from ${frames[0]} "* ]] ||
   fail "no replay command ending at the frame F12 saved, from the first key on: $command"
 bash -c "$command" >replay_out.txt 2>&1 || fail "the replay command failed: $command"
 
-"$compare_png" --channel 0 --share 0 out/s4_4/final.png "$shot" >compare.txt ||
-  fail "the page F12 saved differs from the replay's final.png: $(cat compare.txt)"
-echo "F12 saved the replay's final.png, pixel for pixel"
+compare_with_saved s4_4
