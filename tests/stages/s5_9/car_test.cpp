@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "joint_measures.h"
 #include "joints.h"
 #include "scene_io.h"
 #include "world_fixture.h"
@@ -47,31 +48,8 @@ struct Car {
     double springLength(std::size_t k) const {
         return engine::positionOf(joint(k).definition, body(kChassis), body(k == kRearSpring ? kRearAxle : kFrontAxle));
     }
-    const engine::RigidShape& bodyOf(engine::BodyId id) const {
-        for (std::size_t i = 0; i < page.core.objectCount(); ++i) {
-            if (body(i).id() == id) return body(i);
-        }
-        FAIL("no body " << id);
-        return body(0);
-    }
-    double largestSeparation() const {
-        double largest = 0.0;
-        for (const engine::Joint& joint : page.core.joints().all()) {
-            largest = std::max(largest, engine::separationOf(joint.definition, bodyOf(joint.definition.body_a),
-                                                             bodyOf(joint.definition.body_b)));
-        }
-        return largest;
-    }
-    bool finite() const {
-        for (std::size_t i = 0; i < page.core.objectCount(); ++i) {
-            const engine::RigidShape& shape = body(i);
-            if (!test::finite(shape.center()) || !test::finite(shape.velocity()) ||
-                !std::isfinite(shape.angularVelocity()) || !std::isfinite(shape.angle())) {
-                return false;
-            }
-        }
-        return true;
-    }
+    double largestSeparation() const { return s5_9_measures::largestSeparation(page.core); }
+    bool finite() const { return s5_9_measures::allFinite(page.core); }
     test::WorldFixture page;
 };
 

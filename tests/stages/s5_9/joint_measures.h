@@ -48,6 +48,18 @@ inline double largestSeparation(const engine::Core& core) {
     return largest;
 }
 
+// Whether every body's centre, velocity, spin and angle are finite numbers.
+inline bool allFinite(const engine::Core& core) {
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const engine::RigidShape& shape = core.object(i);
+        if (!test::finite(shape.center()) || !test::finite(shape.velocity()) ||
+            !std::isfinite(shape.angularVelocity()) || !std::isfinite(shape.angle())) {
+            return false;
+        }
+    }
+    return true;
+}
+
 // Kinetic plus potential energy of every moving body (y grows downward: U = -m g y).
 inline double energy(const engine::Core& core) {
     double total = 0.0;

@@ -47,21 +47,11 @@ engine::WorldSettings sweepWorld(double gravity, int iterations, double joint_he
     return world;
 }
 
+using s5_9_measures::allFinite;
 using s5_9_measures::bodyOf;
 using s5_9_measures::energy;
 using s5_9_measures::largestSeparation;
 using s5_9_measures::separationOf;
-
-bool allFinite(const engine::Core& core) {
-    for (std::size_t i = 0; i < core.objectCount(); ++i) {
-        const engine::RigidShape& shape = core.object(i);
-        if (!test::finite(shape.center()) || !test::finite(shape.velocity()) ||
-            !std::isfinite(shape.angularVelocity()) || !std::isfinite(shape.angle())) {
-            return false;
-        }
-    }
-    return true;
-}
 
 std::string hardOrSoft(double joint_hertz) { return joint_hertz == 0.0 ? "hard" : "soft"; }
 
