@@ -102,7 +102,7 @@ TEST_CASE("s5_4: a box resting flat on a floor touches it at two points, the end
     const engine::Rectangle box({50, 80.5}, 40, 40);
     const auto info = engine::narrowPhase(floor, box);
     REQUIRE(info);
-    const engine::ContactManifold manifold = engine::contactManifold(floor, box, *info);
+    const engine::ContactManifold manifold = engine::contactManifold(floor, box, *info, engine::kSlop);
     CHECK_THAT(manifold.normal, test::near(Vec2{0, -1}, 1e-12));
     REQUIRE(manifold.points.size() == 2);
     const double left = std::min(manifold.points[0].position.x, manifold.points[1].position.x);
@@ -124,7 +124,7 @@ TEST_CASE(
     const engine::Rectangle box({200, 80.5}, 40, 40);
     const auto info = engine::narrowPhase(floor, box);
     REQUIRE(info);
-    const engine::ContactManifold manifold = engine::contactManifold(floor, box, *info);
+    const engine::ContactManifold manifold = engine::contactManifold(floor, box, *info, engine::kSlop);
     REQUIRE(manifold.points.size() == 2);
     const double left = std::min(manifold.points[0].position.x, manifold.points[1].position.x);
     const double right = std::max(manifold.points[0].position.x, manifold.points[1].position.x);
@@ -140,7 +140,7 @@ TEST_CASE("s5_4: a box standing on one corner touches at one point; a circle at 
     box.rotate(std::numbers::pi / 4);
     const auto corner = engine::narrowPhase(floor, box);
     REQUIRE(corner);
-    const engine::ContactManifold on_corner = engine::contactManifold(floor, box, *corner);
+    const engine::ContactManifold on_corner = engine::contactManifold(floor, box, *corner, engine::kSlop);
     test::requireEqual("contact points of a box standing on its corner: one", 1, on_corner.points.size());
     CHECK_THAT(on_corner.points[0].position, test::near(Vec2{50, 100.25}, 1e-9));
     CHECK_THAT(on_corner.points[0].depth, test::near(0.5, 1e-9));
@@ -148,7 +148,7 @@ TEST_CASE("s5_4: a box standing on one corner touches at one point; a circle at 
     const engine::Circle ball({50, 90.5}, 10);  // 0.5 px into the floor
     const auto touch = engine::narrowPhase(floor, ball);
     REQUIRE(touch);
-    const engine::ContactManifold round = engine::contactManifold(floor, ball, *touch);
+    const engine::ContactManifold round = engine::contactManifold(floor, ball, *touch, engine::kSlop);
     REQUIRE(round.points.size() == 1);
     CHECK_THAT(round.points[0].position, test::near(Vec2{50, 100.25}, 1e-12));
     CHECK_THAT(round.points[0].depth, test::near(0.5, 1e-12));
