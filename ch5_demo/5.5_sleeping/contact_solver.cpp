@@ -146,7 +146,9 @@ bool ContactSolver::meetPairs(ShapeList shapes, BroadPhase& broad_phase, Islands
             woke = true;
         }
         found.push_back({i, j, *info});
-        ContactManifold manifold = contactManifold(a, b, *info);
+        // Depths closer than the slop are one depth to the solver: no reason to change
+        // which shape's face the points are measured from (contact_manifold.cpp).
+        ContactManifold manifold = contactManifold(a, b, *info, world.slop);
         Contact contact{.a = i,
                         .b = j,
                         .id_a = a.id(),
@@ -360,6 +362,16 @@ void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world) {
 // are (effective masses, totals never below 0), that move the shapes once and are then
 // dropped. The real velocities never see them, so removing overlap adds no energy: a
 // box pushed out of the floor does not fly up.
+//
+// Only the points past the slop take part. A point within it asks for nothing, and it
+// does not hold either: a neighbour's push may drive it deeper, and once past the slop
+// it pushes back from the next step on (Box2D 2.4's position passes, too, leave such a
+// point alone). Were each point to refuse to close, pushing one box out of the floor
+// would mean lifting the whole pile on it: a problem as large as the velocities',
+// which three passes started from nothing leave half solved. The half answer shoves
+// and turns shapes all through the pile, opens contacts that carry weight, and moves
+// the points under the impulses the next step starts from; such a pile never comes to
+// rest (bench/README.md, "Creep at rest").
 void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world) {
     // With no overlap past the slop anywhere every pseudo velocity stays 0 (the totals
     // start at 0 and nothing asks for more): a pile at rest skips the passes.
@@ -373,6 +385,7 @@ void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world)
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];
             for (Point& point : contact.points) {
+                if (point.removal_speed == 0.0) continue;  // within the slop
                 const double speed = speedAlong(a.pseudo, b.pseudo, contact.normal, point.normal_turns);
                 const double total =
                     std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);

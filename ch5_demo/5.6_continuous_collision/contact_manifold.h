@@ -10,8 +10,10 @@
 // segment can carry, so the manifold of two rectangles has up to two points.
 //
 // How the two points are found (clipping). The book's separating axis test still
-// chooses the axis: its normal is a face normal of one of the rectangles, the
-// *reference face*. The other rectangle's face that looks most against it is the
+// chooses the axis: its normal is a face normal of one of the rectangles, and that
+// face, or the first rectangle's face that looks along it when that one is deeper by
+// no more than a tolerance (contact_manifold.cpp says why), is the *reference face*.
+// The other rectangle's face that looks most against it is the
 // *incident face*. The incident face, a segment, is cut by the two side lines of the
 // reference face (the lines through its ends, square to it), so that what is left lies
 // over the reference face; of that, the ends that lie behind the reference face are
@@ -19,8 +21,8 @@
 //
 // A pair with a circle touches at one point: the middle of the book's segment.
 //
-// Each point carries a key naming the features that made it (which faces, which
-// corner or which side line), so that the solver can recognise the same point in the
+// Each point carries a key naming the features that made it (which faces, and which
+// end of the incident face), so that the solver can recognise the same point in the
 // next step, although the shapes have moved, and start it from its last impulses.
 
 #include <array>
@@ -76,7 +78,8 @@ ContactFeatures featuresOf(std::uint32_t key);
 
 // The contact points of two shapes whose overlap the narrow phase found (`info`, its
 // normal from a towards b). Two rectangles give one or two points, a pair with a
-// circle one.
-ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info);
+// circle one. Of two rectangles, a's face is the reference unless b's is shallower by
+// more than `tolerance` (px), and the manifold's normal is the reference face's.
+ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info, double tolerance);
 
 }  // namespace engine

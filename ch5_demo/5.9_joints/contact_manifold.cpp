@@ -1,7 +1,9 @@
 #include "contact_manifold.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 
 #include "polygon.h"
 #include "polygon_sat.h"
@@ -11,19 +13,14 @@ namespace engine {
 
 namespace {
 
-// A point of the incident face on its way through the clipping, with the key of the
-// feature it stands for: one of the incident rectangle's corners (0 to 3) or, once a
-// side line has cut the face, that side line (kCutAtStart, kCutAtEnd).
-struct Tagged {
-    Vec2 point;
-    std::uint32_t feature;
-};
-constexpr std::uint32_t kCutAtStart = 4;  // the side line through the reference face's first corner
-constexpr std::uint32_t kCutAtEnd = 5;    // ... through its second corner
+// The incident face on its way through the clipping: its two ends, each where it is
+// now, its corner or, once a side line has cut the face, the point of the cut.
+using Segment = std::array<Vec2, 2>;
 // The key of the one point of a pair with a circle, and of the fallback point below.
 constexpr std::uint32_t kSinglePoint = 0xFFFF;
-// Where the faces sit in a key: bits 0-3 the point's feature, 4-7 the incident face,
-// 8-11 the reference face, bit 12 set when the reference face is b's.
+// Where the faces sit in a key: bits 0-3 the point's end of the incident face (0 or
+// 1), 4-7 the incident face, 8-11 the reference face, bit 12 set when the reference
+// face is b's.
 constexpr int kIncidentShift = 4;
 constexpr int kReferenceShift = 8;
 constexpr std::uint32_t kReferenceIsB = 1u << 12;
@@ -38,33 +35,58 @@ std::size_t faceFacing(const Rectangle& box, Vec2 direction) {
     return best;
 }
 
-// Keeps the part of the segment (two points) where dot(p, direction) <= limit: a point
-// beyond the line is moved along the segment onto it, and takes the line's key. The
+// Keeps the part of the segment (two points) where dot(p, direction) <= limit: an end
+// beyond the line is moved along the segment onto it, and stays the same end. The
 // segment is never wholly beyond the line when the rectangles overlap (the incident
 // face reaches over the reference face); if rounding says it is, nothing is kept.
-std::size_t clip(std::array<Tagged, 2>& segment, Vec2 direction, double limit, std::uint32_t line) {
-    const double beyond0 = segment[0].point.dot(direction) - limit;
-    const double beyond1 = segment[1].point.dot(direction) - limit;
+std::size_t clip(Segment& segment, Vec2 direction, double limit) {
+    const double beyond0 = segment[0].dot(direction) - limit;
+    const double beyond1 = segment[1].dot(direction) - limit;
     if (beyond0 > 0 && beyond1 > 0) return 0;
     if (beyond0 <= 0 && beyond1 <= 0) return 2;
     // The line crosses the segment where the distances beyond it, one each side of 0,
     // interpolate to 0.
-    const Vec2 crossing = segment[0].point + (segment[1].point - segment[0].point) * (beyond0 / (beyond0 - beyond1));
-    segment[beyond0 > 0 ? 0 : 1] = Tagged{crossing, line};
+    const Vec2 crossing = segment[0] + (segment[1] - segment[0]) * (beyond0 / (beyond0 - beyond1));
+    segment[beyond0 > 0 ? 0 : 1] = crossing;
     return 2;
+}
+
+// How far the corners of `corners_of` reach behind face `face` of `faces_of`: the
+// overlap of the two measured along that face's normal (its deepest corner).
+double depthBehind(const Rectangle& faces_of, std::size_t face, const Rectangle& corners_of) {
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (Vec2 corner : corners_of.vertices()) {
+        deepest = std::max(deepest, (faces_of.vertices()[face] - corner).dot(faces_of.faceNormals()[face]));
+    }
+    return deepest;
 }
 
 ContactPoint middleOfSegment(const CollisionInfo& info, std::uint32_t key) {
     return {info.start() + info.normal() * (info.depth() / 2), info.depth(), key};
 }
 
-// The two rectangles' points (see contact_manifold.h).
-UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2 normal) {
+// The two rectangles' points (see contact_manifold.h), and the normal of the face that
+// made them, from a towards b.
+struct Clipped {
+    Vec2 normal;
+    UpToTwo<ContactPoint> points;
+};
+Clipped clippedPoints(const Rectangle& a, const Rectangle& b, Vec2 normal, double tolerance) {
     // The separating axis test's normal is one of the faces' normals: a's face looking
-    // along it, or b's looking against it. Whichever matches better is the reference.
+    // along it, or b's looking against it. Those two faces are the candidates.
     const std::size_t face_a = faceFacing(a, normal);
     const std::size_t face_b = faceFacing(b, -normal);
-    const bool b_is_reference = b.faceNormals()[face_b].dot(-normal) > a.faceNormals()[face_a].dot(normal);
+    // The test takes whichever face the other shape reaches less deep behind. But where
+    // two boxes lie face to face, the two depths are all but equal, and which is the
+    // smaller turns on the last digits and on every small rocking of the pair. The
+    // reference would swap from step to step, and with it every point's key (the key
+    // names the reference): the solver would lose both points' warm start and rebuild
+    // the pair's load from nothing, each time. In a pile that happens somewhere every
+    // step, and the pile never comes to rest (bench/README.md, "Creep at rest"). So
+    // a's face stays the reference unless b's is shallower by more than `tolerance`.
+    // Either face is a true answer of the separating axis test, the one kept at most
+    // that much deeper than the other.
+    const bool b_is_reference = depthBehind(b, face_b, a) < depthBehind(a, face_a, b) - tolerance;
     const Rectangle& reference = b_is_reference ? b : a;
     const Rectangle& incident = b_is_reference ? a : b;
     const std::size_t reference_face = b_is_reference ? face_b : face_a;
@@ -74,30 +96,34 @@ UpToTwo<ContactPoint> clippedPoints(const Rectangle& a, const Rectangle& b, Vec2
     // corner i to corner i + 1 (rectangle.h).
     const std::size_t incident_face = faceFacing(incident, -reference_normal);
     const std::size_t incident_end = (incident_face + 1) % 4;
-    std::array<Tagged, 2> segment{Tagged{incident.vertices()[incident_face], static_cast<std::uint32_t>(incident_face)},
-                                  Tagged{incident.vertices()[incident_end], static_cast<std::uint32_t>(incident_end)}};
+    Segment segment{incident.vertices()[incident_face], incident.vertices()[incident_end]};
 
     // The reference face runs from `first` to `second` along `along`: its side lines
     // are dot(p, along) = dot(first, along) and = dot(second, along).
     const Vec2 first = reference.vertices()[reference_face];
     const Vec2 second = reference.vertices()[(reference_face + 1) % 4];
     const Vec2 along = (second - first).normalize();
-    if (clip(segment, -along, -first.dot(along), kCutAtStart) == 0) return {};
-    if (clip(segment, along, second.dot(along), kCutAtEnd) == 0) return {};
+    Clipped clipped{b_is_reference ? -reference_normal : reference_normal, {}};
+    if (clip(segment, -along, -first.dot(along)) == 0) return clipped;
+    if (clip(segment, along, second.dot(along)) == 0) return clipped;
 
-    // The key: who is the reference, which two faces, which feature of the point.
+    // The key: who is the reference, which two faces, which end of the incident face.
+    // The end, not what made it (the incident corner, or the cut of a side line): where
+    // two faces of the same length lie one on the other, the corners sit right on the
+    // side lines, and a shift of a hair either way turns a corner into a cut. The point
+    // moves by that hair, no more, so it is the same point, and must keep its key (and
+    // its impulses) as it goes.
     const std::uint32_t faces = (b_is_reference ? kReferenceIsB : 0u) |
                                 static_cast<std::uint32_t>(reference_face) << kReferenceShift |
                                 static_cast<std::uint32_t>(incident_face) << kIncidentShift;
-    UpToTwo<ContactPoint> points;
-    for (const Tagged& end : segment) {
+    for (std::uint32_t end = 0; end < segment.size(); ++end) {
         // Behind the reference face by `depth`; the point itself goes halfway back to
         // the face, between the two outlines.
-        const double depth = (first - end.point).dot(reference_normal);
+        const double depth = (first - segment[end]).dot(reference_normal);
         if (depth < 0) continue;  // in front of the face: not touching there
-        points.push_back({end.point + reference_normal * (depth / 2), depth, faces | end.feature});
+        clipped.points.push_back({segment[end] + reference_normal * (depth / 2), depth, faces | end});
     }
-    return points;
+    return clipped;
 }
 
 // A pair with a polygon in it and no circle (5.8): the same clipping for n sides
@@ -126,11 +152,12 @@ ContactFeatures featuresOf(std::uint32_t key) {
             .incident_face = (key >> kIncidentShift) & kFaceMask};
 }
 
-ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info) {
+ContactManifold contactManifold(const RigidShape& a, const RigidShape& b, const CollisionInfo& info, double tolerance) {
     ContactManifold manifold{info.normal(), {}};
     if (a.type() == ShapeType::Rectangle && b.type() == ShapeType::Rectangle) {
-        manifold.points =
-            clippedPoints(static_cast<const Rectangle&>(a), static_cast<const Rectangle&>(b), info.normal());
+        const Clipped clipped =
+            clippedPoints(static_cast<const Rectangle&>(a), static_cast<const Rectangle&>(b), info.normal(), tolerance);
+        if (!clipped.points.empty()) manifold = {clipped.normal, clipped.points};
     } else if (a.type() != ShapeType::Circle && b.type() != ShapeType::Circle) {
         manifold.points = polygonPoints(a, b, info.normal());
     }
