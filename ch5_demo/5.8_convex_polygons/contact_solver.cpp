@@ -369,15 +369,17 @@ void ContactSolver::relaxAndMove(ShapeList shapes, const WorldSettings& world) {
 // dropped. The real velocities never see them, so removing overlap adds no energy: a
 // box pushed out of the floor does not fly up.
 //
-// Only the points past the slop take part. A point within it asks for nothing, and it
-// does not hold either: a neighbour's push may drive it deeper, and once past the slop
-// it pushes back from the next step on (Box2D 2.4's position passes, too, leave such a
-// point alone). Were each point to refuse to close, pushing one box out of the floor
-// would mean lifting the whole pile on it: a problem as large as the velocities',
-// which three passes started from nothing leave half solved. The half answer shoves
-// and turns shapes all through the pile, opens contacts that carry weight, and moves
-// the points under the impulses the next step starts from; such a pile never comes to
-// rest (bench/README.md, "Creep at rest").
+// Every point aims at the slop, from either side, at the same rate: one past it is
+// pushed out by position_rate of its excess a step; one within it may close by
+// position_rate of its room a step, and is held only beyond that. A point that held
+// at any depth (asked not to close at all) would make pushing one box out of the floor
+// mean lifting the whole pile on it: a problem as large as the velocities', which three
+// passes started from nothing leave half solved. The half answer shoves and turns
+// shapes all through the pile, opens contacts that carry weight, and moves the points
+// under the impulses the next step starts from: such a pile never comes to rest
+// (bench/README.md, "Creep at rest"). Letting a point within the slop close keeps a
+// push near where it starts (Box2D 2.4's position passes leave such a point alone
+// altogether).
 void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world) {
     // With no overlap past the slop anywhere every pseudo velocity stays 0 (the totals
     // start at 0 and nothing asks for more): a pile at rest skips the passes.
@@ -391,10 +393,11 @@ void ContactSolver::solvePositions(ShapeList shapes, const WorldSettings& world)
             SolverBody& a = bodies_[contact.a];
             SolverBody& b = bodies_[contact.b];
             for (Point& point : contact.points) {
-                if (point.removal_speed == 0.0) continue;  // within the slop
+                // Past the slop the removal speed; within it, the speed that closes
+                // the point to the slop at the same rate (below 0: it may close).
+                const double target = world.position_rate * (point.contact.depth - world.slop) / world.dt;
                 const double speed = speedAlong(a.pseudo, b.pseudo, contact.normal, point.normal_turns);
-                const double total =
-                    std::max(point.split_impulse + point.normal_mass * (point.removal_speed - speed), 0.0);
+                const double total = std::max(point.split_impulse + point.normal_mass * (target - speed), 0.0);
                 pushAlong(a, b, &SolverBody::pseudo, contact.normal, point.normal_turns, total - point.split_impulse);
                 point.split_impulse = total;
             }

@@ -37,8 +37,9 @@ std::optional<SatCollision> satCollision(const ConvexPolygon& a, const ConvexPol
 // and a key naming the features that made it (the same layout as 5.4's keys: bits 0-3
 // the point's feature, 4-7 the incident face, 8-11 the reference face, bit 12 set when
 // the reference face is B's). The feature is an incident corner, 0 to 7, or one of the
-// reference face's side lines, kClippedAtStart or kClippedAtEnd; 5.4's rectangles use
-// 4 and 5 for those, which a polygon's corners 4 and 5 would share, so they move up.
+// reference face's side lines, kClippedAtStart or kClippedAtEnd, past the corners of
+// any polygon. (5.4's rectangles name the incident face's end there instead, 0 or 1,
+// contact_manifold.cpp; a polygon's point still names what made it.)
 inline constexpr std::uint32_t kClippedAtStart = 8;
 inline constexpr std::uint32_t kClippedAtEnd = 9;
 

@@ -575,18 +575,19 @@ double pileMedianSpeed(std::uint64_t seed, bool mixed, double gravity, const std
     constexpr int kLayers = 10;
     constexpr double kCell = 26.0;  // px between lattice points: room for the largest shape
     constexpr double kWidth = kAcross * kCell;
+    constexpr double kLeft = 400 - kWidth / 2;  // px, the box centred on the canvas
     test::WorldFixture page(solverWorld(", \"gravity\": [0, " + std::to_string(gravity) + "], \"position_method\": \"" +
                                         method + "\", \"remove_out_of_bounds\": false"),
                             seed);
     const engine::PhysicalAttributes wall{.mass = 0, .friction = 0.3, .restitution = 0.2};
-    page.core.add(engine::Rectangle({200 + kWidth / 2, 430}, kWidth + 40, 20, wall));
-    page.core.add(engine::Rectangle({190, 250}, 20, 360, wall));
-    page.core.add(engine::Rectangle({210 + kWidth, 250}, 20, 360, wall));
+    page.core.add(engine::Rectangle({kLeft + kWidth / 2, 430}, kWidth + 40, 20, wall));
+    page.core.add(engine::Rectangle({kLeft - 10, 250}, 20, 360, wall));
+    page.core.add(engine::Rectangle({kLeft + 10 + kWidth, 250}, 20, 360, wall));
     const engine::PhysicalAttributes body{.mass = 1, .friction = 0.3, .restitution = 0.2};
     for (int layer = 0; layer < kLayers; ++layer) {
         for (int column = 0; column < kAcross; ++column) {
             const double size = 10 + 15 * page.random.next();
-            const Vec2 at{200 + kCell * (column + 0.5) + 2 * (page.random.next() - 0.5),
+            const Vec2 at{kLeft + kCell * (column + 0.5) + 2 * (page.random.next() - 0.5),
                           400 - kCell * (layer + 0.5) - 2 * page.random.next()};
             if (mixed && (layer + column) % 2 == 1) {
                 page.core.add(engine::Circle(at, size / 2, body));
