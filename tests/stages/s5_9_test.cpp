@@ -290,7 +290,7 @@ TEST_CASE("s5_9: a 30 x 30 grid of discs pinned to their neighbours, one corner 
     // swings: no NaN, nothing flung away, every pin held within a stated gap. 900 discs
     // hanging from one pin are 900 : 1 on the corner's pin, and a pull crosses the grid
     // one pin an iteration. Met from the far corner in to the fixed one (joints.cpp,
-    // orderFromSupports), its pins gape by up to 37 px at 8 iterations, 11 at 16, 9 at 32
+    // orderFromSupports), its pins gape by up to 35 px at 8 iterations, 11 at 16, 7 at 32
     // (in the order they were made: 69, 35, 17; Box2D 2.4 on the same grid,
     // build/joints_bench: 2,855 px, torn, at 8; 20 at 16; 12.5 at 32). The test takes 16.
     engine::WorldSettings world = jointWorld();
