@@ -299,29 +299,7 @@ TEST_CASE("s5_9: a 30 x 30 grid of discs pinned to their neighbours, one corner 
     constexpr int kSide = 30;
     constexpr double kSpacing = 12.0;
     const Vec2 corner{200, 40};
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            const bool fixed = row == 0 && column == 0;
-            page.core.add(engine::Circle(corner + Vec2{column * kSpacing, row * kSpacing}, 4,
-                                         fixed ? kStatic : engine::PhysicalAttributes{}));
-        }
-    }
-    const auto at = [&](int row, int column) -> engine::RigidShape& {
-        return page.core.object(static_cast<std::size_t>(row * kSide + column));
-    };
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            const Vec2 here = at(row, column).center();
-            if (column + 1 < kSide) {
-                page.core.join(engine::pinAt(engine::JointType::revolute, at(row, column), at(row, column + 1),
-                                             here + Vec2{kSpacing / 2, 0}));
-            }
-            if (row + 1 < kSide) {
-                page.core.join(engine::pinAt(engine::JointType::revolute, at(row, column), at(row + 1, column),
-                                             here + Vec2{0, kSpacing / 2}));
-            }
-        }
-    }
+    s5_9_measures::hangGrid(page.core, corner, kSide, kSpacing, 4.0, false);
     REQUIRE(page.core.joints().all().size() == 2 * kSide * (kSide - 1));
     double worst_gap = 0.0, farthest = 0.0;
     for (int step = 0; step < 600; ++step) {

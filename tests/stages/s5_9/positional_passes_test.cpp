@@ -110,28 +110,7 @@ TEST_CASE("s5_9: a grid too stiff for its iterations tears, but no body it holds
     constexpr int kSide = 20;
     constexpr double kSpacing = 16.0;
     const Vec2 corner{200, 40};
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            page.core.add(engine::Rectangle(corner + Vec2{column * kSpacing, row * kSpacing}, 4, 4,
-                                            row == 0 && column == 0 ? kStatic : engine::PhysicalAttributes{}));
-        }
-    }
-    const auto body = [&](int row, int column) -> const engine::RigidShape& {
-        return page.core.object(static_cast<std::size_t>(row * kSide + column));
-    };
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            const Vec2 here = body(row, column).center();
-            if (column + 1 < kSide) {
-                page.core.join(engine::pinAt(engine::JointType::revolute, body(row, column), body(row, column + 1),
-                                             here + Vec2{kSpacing / 2, 0}));
-            }
-            if (row + 1 < kSide) {
-                page.core.join(engine::pinAt(engine::JointType::revolute, body(row, column), body(row + 1, column),
-                                             here + Vec2{0, kSpacing / 2}));
-            }
-        }
-    }
+    s5_9_measures::hangGrid(page.core, corner, kSide, kSpacing, 2.0, true);
     double fastest = 0.0, widest = 0.0;
     for (int step = 0; step < 600; ++step) {
         page.steps(1);
@@ -209,34 +188,7 @@ TEST_CASE("s5_9: grids of pins over size, spacing, body, gravity and iterations 
             world.substeps = substeps;
             test::WorldFixture page(world);
             const Vec2 corner{200, 40};
-            for (int row = 0; row < point.side; ++row) {
-                for (int column = 0; column < point.side; ++column) {
-                    const Vec2 at = corner + Vec2{column * point.spacing, row * point.spacing};
-                    const engine::PhysicalAttributes attributes =
-                        row == 0 && column == 0 ? kStatic : engine::PhysicalAttributes{};
-                    if (point.boxes) {
-                        page.core.add(engine::Rectangle(at, 2 * point.radius, 2 * point.radius, attributes));
-                    } else {
-                        page.core.add(engine::Circle(at, point.radius, attributes));
-                    }
-                }
-            }
-            const auto body = [&](int row, int column) -> const engine::RigidShape& {
-                return page.core.object(static_cast<std::size_t>(row * point.side + column));
-            };
-            for (int row = 0; row < point.side; ++row) {
-                for (int column = 0; column < point.side; ++column) {
-                    const Vec2 here = body(row, column).center();
-                    if (column + 1 < point.side) {
-                        page.core.join(engine::pinAt(engine::JointType::revolute, body(row, column),
-                                                     body(row, column + 1), here + Vec2{point.spacing / 2, 0}));
-                    }
-                    if (row + 1 < point.side) {
-                        page.core.join(engine::pinAt(engine::JointType::revolute, body(row, column),
-                                                     body(row + 1, column), here + Vec2{0, point.spacing / 2}));
-                    }
-                }
-            }
+            s5_9_measures::hangGrid(page.core, corner, point.side, point.spacing, point.radius, point.boxes);
             double& widest = gaps[substeps == 1 ? 0 : 1];
             for (int step = 0; step < 300; ++step) {
                 page.steps(1);
