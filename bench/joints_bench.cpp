@@ -16,6 +16,10 @@
 //   NO_BOX=1 build/joints_bench     the bridge with nothing on it
 //   build/joints_bench --only grid  one scene alone (chain, bridge or grid): for perf record
 //   STAGE_ONLY=1 build/joints_bench the stage's rows alone (farm-bench's ratios of two builds)
+//   GRID="20 12 2 300" build/joints_bench --only grid
+//                                   another grid: side, spacing px, radius px, gravity px/s^2,
+//                                   and "boxes" after them for boxes of that half side
+//                                   (tests/stages/s5_9/positional_passes_test.cpp's sweep)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,12 +64,13 @@ struct Pin {
     Vec2 anchor;
 };
 struct JointScene {
-    const char* name;
+    std::string name;
     std::vector<Piece> pieces;
     std::vector<Pin> pins;
     // A piece added after this many steps (the bridge's load), or none.
     std::optional<Piece> dropped;
     int drop_at = 0;
+    double gravity = kGravity;  // px/s^2, down
 };
 
 // 40 links of 20 x 5 px from a post, released level, a disc of 10 links' mass at the end.
@@ -115,33 +120,60 @@ JointScene bridge() {
     return scene;
 }
 
-// 30 x 30 discs of radius 4 px, 12 px apart, each pinned halfway to its right and lower
-// neighbours (1,740 pins), the top left disc static: it falls from level and swings.
-JointScene grid() {
-    JointScene scene{.name = "grid: 30 x 30 discs, 1,740 pins, one corner fixed",
-                     .pieces = {},
-                     .pins = {},
-                     .dropped = {},
-                     .drop_at = 0};
-    constexpr int kSide = 30;
-    constexpr double kSpacing = 12.0;
+// A grid of bodies, each pinned halfway to its right and lower neighbours, the top left
+// one static: it falls from level and swings. The bench's own: 30 x 30 discs of radius
+// 4 px, 12 px apart (1,740 pins), at 300 px/s^2.
+struct GridShape {
+    int side = 30;
+    double spacing = 12.0;  // px
+    double radius = 4.0;    // px: a disc's, or half a box's side
+    double gravity = kGravity;
+    bool boxes = false;
+};
+
+// The grid GRID names ("side spacing radius gravity", then "boxes" or nothing), or the
+// bench's own; nullopt when GRID is there but not such a grid.
+std::optional<GridShape> gridShape() {
+    GridShape shape;
+    const char* given = std::getenv("GRID");
+    if (given == nullptr) return shape;
+    char kind[8] = "";
+    const int read =
+        std::sscanf(given, "%d %lf %lf %lf %7s", &shape.side, &shape.spacing, &shape.radius, &shape.gravity, kind);
+    shape.boxes = std::string_view(kind) == "boxes";
+    const bool fits = shape.side >= 2 && shape.side <= 100 && shape.spacing > 0 && shape.spacing < 1000 &&
+                      shape.radius > 0 && shape.radius < 1000 && shape.gravity >= 0 && shape.gravity < 1e5;
+    if ((read != 4 && read != 5) || (read == 5 && !shape.boxes) || !fits) return std::nullopt;
+    return shape;
+}
+
+JointScene grid(const GridShape& shape) {
+    char name[160];
+    std::snprintf(name, sizeof name, "grid: %d x %d %s of %s %g px, %g px apart, %d pins, one corner fixed, g %g",
+                  shape.side, shape.side, shape.boxes ? "boxes" : "discs", shape.boxes ? "half side" : "radius",
+                  shape.radius, shape.spacing, 2 * shape.side * (shape.side - 1), shape.gravity);
+    JointScene scene{.name = name, .pieces = {}, .pins = {}, .dropped = {}, .drop_at = 0, .gravity = shape.gravity};
+    const int side = shape.side;
+    const double spacing = shape.spacing;
     const Vec2 corner{200, 40};
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            scene.pieces.push_back({.disc = true,
-                                    .center = corner + Vec2{column * kSpacing, row * kSpacing},
-                                    .radius = 4,
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            scene.pieces.push_back({.disc = !shape.boxes,
+                                    .center = corner + Vec2{column * spacing, row * spacing},
+                                    .width = 2 * shape.radius,
+                                    .height = 2 * shape.radius,
+                                    .radius = shape.radius,
                                     .mass = row == 0 && column == 0 ? 0.0 : 1.0});
         }
     }
-    const auto at = [](int row, int column) { return static_cast<std::size_t>(row * kSide + column); };
-    for (int row = 0; row < kSide; ++row) {
-        for (int column = 0; column < kSide; ++column) {
-            const Vec2 here = corner + Vec2{column * kSpacing, row * kSpacing};
-            if (column + 1 < kSide)
-                scene.pins.push_back({at(row, column), at(row, column + 1), here + Vec2{kSpacing / 2, 0}});
-            if (row + 1 < kSide)
-                scene.pins.push_back({at(row, column), at(row + 1, column), here + Vec2{0, kSpacing / 2}});
+    const auto at = [side](int row, int column) { return static_cast<std::size_t>(row * side + column); };
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            const Vec2 here = corner + Vec2{column * spacing, row * spacing};
+            if (column + 1 < side)
+                scene.pins.push_back({at(row, column), at(row, column + 1), here + Vec2{spacing / 2, 0}});
+            if (row + 1 < side)
+                scene.pins.push_back({at(row, column), at(row + 1, column), here + Vec2{0, spacing / 2}});
         }
     }
     return scene;
@@ -168,7 +200,7 @@ Result runStage(const JointScene& scene, int iterations, int substeps = 1) {
     engine::WorldSettings world = engine::kBookWorld;
     world.substeps = substeps;
     world.solver = engine::SolverKind::sequential_impulse;
-    world.gravity = {0, kGravity};
+    world.gravity = {0, scene.gravity};
     world.velocity_iterations = iterations;
     world.remove_out_of_bounds = false;
     world.sleep = false;
@@ -218,7 +250,7 @@ Vec2 pixels(b2Vec2 m) { return Vec2{m.x, m.y} * kPixelsPerMetre; }
 
 // Box2D 2.4, 3 position iterations (its default), the same pieces and pins.
 Result runBox2d(const JointScene& scene, int iterations) {
-    b2World world(b2Vec2(0.0f, static_cast<float>(kGravity / kPixelsPerMetre)));
+    b2World world(b2Vec2(0.0f, static_cast<float>(scene.gravity / kPixelsPerMetre)));
     world.SetContinuousPhysics(false);
     world.SetAllowSleeping(false);
     std::vector<b2Body*> bodies;
@@ -340,6 +372,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "joints_bench: takes no arguments, or --only chain|bridge|grid\n");
         return 2;
     }
+    const std::optional<GridShape> grid_shape = gridShape();
+    if (!grid_shape) {
+        std::fprintf(stderr,
+                     "joints_bench: GRID is \"side spacing radius gravity\" (2-100, px, px, px/s^2), then "
+                     "\"boxes\" or nothing\n");
+        return 2;
+    }
     // The chain and the bridge are cheap: a sweep, each run timed three times. The grid
     // costs a second a run: a few points, once each.
     struct Plan {
@@ -351,9 +390,9 @@ int main(int argc, char** argv) {
     };
     const std::vector<int> sweep{4, 6, 8, 12, 16, 24, 32};
     for (const Plan& plan : {Plan{"chain", chain(), sweep, {4, 8}, 3}, Plan{"bridge", bridge(), sweep, {4, 8}, 3},
-                             Plan{"grid", grid(), {8, 12, 16, 32}, {8}, 1}}) {
+                             Plan{"grid", grid(*grid_shape), {8, 12, 16, 32}, {8}, 1}}) {
         if (!only.empty() && plan.name != only) continue;
-        std::printf("\n%s, 10 s at 60 Hz\n\n", plan.scene.name);
+        std::printf("\n%s, 10 s at 60 Hz\n\n", plan.scene.name.c_str());
         std::vector<Point> points;
         for (const int iterations : plan.iterations) {
             points.push_back(

@@ -54,15 +54,21 @@ void fill(Image& picture, int x0, int y0, int x1, int y1, Color color) {
     }
 }
 
-// The legend's band (Document::legend_room): entries in columns kLegendColumnWidth wide,
-// as many as the page's width holds, in as many rows as the entries fill, filled top to
-// bottom and then left to right, so that each layer's entries stay together.
-constexpr int kLegendColumnWidth = 390;
+// The legend's band (Document::legend_room): entries in columns as wide as the stage's
+// widest entry can be (Document::legend_text_width) with its swatch and a gap, as many
+// as the page's width holds, in as many rows as the entries fill, filled top to bottom
+// and then left to right, so that each layer's entries stay together. The default width
+// gives columns 390 pixels apart.
+constexpr int kLegendColumnGap = 6;
 
-int legend_columns(int page_width) { return std::max(1, (page_width - kPanelMargin) / kLegendColumnWidth); }
+int legend_column_width(int widest) { return kSwatchSize + kSwatchGap + widest + kLegendColumnGap; }
 
-int legend_rows(std::size_t entries, int page_width) {
-    const std::size_t columns = static_cast<std::size_t>(legend_columns(page_width));
+int legend_columns(int page_width, int widest) {
+    return std::max(1, (page_width - kPanelMargin) / legend_column_width(widest));
+}
+
+int legend_rows(std::size_t entries, int page_width, int widest) {
+    const std::size_t columns = static_cast<std::size_t>(legend_columns(page_width, widest));
     return static_cast<int>(std::max<std::size_t>(1, (entries + columns - 1) / columns));
 }
 
@@ -125,9 +131,25 @@ int band_height(std::size_t lines) {
 
 }  // namespace
 
-int legend_band_height(std::size_t entries, int page_width) {
+int legend_band_height(std::size_t entries, int page_width, int widest_text) {
     if (entries == 0) return 0;
-    return legend_rows(entries, page_width) * kLineHeight + kPanelMargin;
+    return legend_rows(entries, page_width, widest_text) * kLineHeight + kPanelMargin;
+}
+
+std::vector<LegendBox> legend_boxes(const Document& document) {
+    const int widest = document.legend_text_width;
+    const int rows = legend_rows(legend_entries(document), page_width(document), widest);
+    const int top = static_cast<int>(document.canvas.height()) +
+                    band_height(note_lines(document).size() + beyond_lines(document).size());
+    std::vector<LegendBox> boxes;
+    for (std::size_t index = 0; index < document.legend.size(); ++index) {
+        const int column = static_cast<int>(index) / rows, row = static_cast<int>(index) % rows;
+        const int x = kPanelMargin + column * legend_column_width(widest);
+        const int y = top + kPanelMargin / 2 + row * kLineHeight;
+        const int right = x + kSwatchSize + kSwatchGap + text_width(document.legend[index].text);
+        boxes.push_back({x, y, right, y + kLineHeight});
+    }
+    return boxes;
 }
 
 Image render_page(const Document& document) {
@@ -137,7 +159,8 @@ Image render_page(const Document& document) {
     const std::vector<std::string> beyond = beyond_lines(document);
     const int band = band_height(notes.size() + beyond.size());
     const int legend_top = static_cast<int>(document.canvas.height()) + band;
-    const int legend_height = legend_band_height(legend_entries(document), page_width(document));
+    const int legend_height =
+        legend_band_height(legend_entries(document), page_width(document), document.legend_text_width);
     Image page(canvas.width + kPanelWidth * scale, canvas.height + (band + legend_height) * scale, colors::kWhite);
     page.paste(canvas, 0, 0);
 
@@ -207,14 +230,13 @@ void draw_legend(Image& page, const Document& document, int top) {
     const int k = document.canvas.scale();
     const int width = page.width / k;
     const int left = kPanelMargin / 2, right = width - kPanelMargin / 2;
-    const int bottom = top + legend_band_height(legend_entries(document), width) - kPanelMargin / 2;
+    const int bottom =
+        top + legend_band_height(legend_entries(document), width, document.legend_text_width) - kPanelMargin / 2;
     fill(page, left * k, top * k, right * k, bottom * k, kLegendBorder);
     fill(page, (left + 1) * k, (top + 1) * k, (right - 1) * k, (bottom - 1) * k, colors::kWhite);
-    const int rows = legend_rows(legend_entries(document), width);
-    for (std::size_t index = 0; index < document.legend.size(); ++index) {
-        const int column = static_cast<int>(index) / rows, row = static_cast<int>(index) % rows;
-        const int x = left + kPanelMargin / 2 + column * kLegendColumnWidth;
-        const int y = top + kPanelMargin / 2 + row * kLineHeight;
+    const std::vector<LegendBox> boxes = legend_boxes(document);
+    for (std::size_t index = 0; index < boxes.size(); ++index) {
+        const int x = boxes[index].left, y = boxes[index].top;
         const LegendEntry& entry = document.legend[index];
         const int swatch_top = y + (kLineHeight - kSwatchSize) / 2 - 2;
         fill(page, x * k, swatch_top * k, (x + kSwatchSize) * k, (swatch_top + kSwatchSize) * k, entry.color);

@@ -18,6 +18,10 @@ struct LegendEntry {
     std::string text;
 };
 
+// How wide a legend entry's text may be (text_width, page pixels) unless the stage says
+// otherwise (Document::legend_text_width): three columns on a page 1180 pixels wide.
+inline constexpr int kLegendTextWidth = 366;
+
 // A note the page adds to a line of the echo, as a footnote: where a line of the echo
 // starts with `line_start` (after its indent), a dim `mark` follows its text, and under
 // the panel the same mark leads `text`, dim too. The echo itself stays as the page was
@@ -56,6 +60,18 @@ struct Document {
     // as tall as the rows those entries take in the columns the page's width holds, or
     // the rows the legend shown takes, if it has more; so a run's pictures keep one height.
     std::size_t legend_entries = 0;
+    // How wide the widest entry's text can be, in page pixels (text_width): the stage
+    // says, from the longest lines its legend writes, numbers included. Each column of the
+    // band is that wide (and a swatch), so that every entry fits in its column and every
+    // column on the page; the band's rows follow from it and legend_entries alone, never
+    // from the words of one frame, so that a run's pictures keep one height.
+    int legend_text_width = kLegendTextWidth;
+};
+
+// Where an entry of the legend lies on the page, in page pixels: from its swatch's left
+// to the end of its text, one line of the font tall.
+struct LegendBox {
+    int left = 0, top = 0, right = 0, bottom = 0;
 };
 
 inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
@@ -71,10 +87,14 @@ inline constexpr int kPanelWidth = 380;  // width of the text panel in pixels
 Image render_page(const Document& document);
 
 // The height of the legend's band, in page pixels, on a page `page_width` page pixels
-// wide (the canvas's width and kPanelWidth), for `entries` entries: a line of the font a
-// row, as many rows as the entries fill in the columns that width holds (at least one),
-// and a margin. 0 entries: no band.
-int legend_band_height(std::size_t entries, int page_width);
+// wide (the canvas's width and kPanelWidth), for `entries` entries whose text is at most
+// `widest_text` wide: a line of the font a row, as many rows as the entries fill in the
+// columns that width holds (at least one), and a margin. 0 entries: no band.
+int legend_band_height(std::size_t entries, int page_width, int widest_text = kLegendTextWidth);
+
+// Where render_page draws each entry of the document's legend (LegendBox), measured with
+// the font's own text_width: what a test checks lies on the page and in its column.
+std::vector<LegendBox> legend_boxes(const Document& document);
 
 // The page with one line of text under it, on a gray band the page's width: what a
 // live window shows (live.h), so the page above the band is the picture a run saves.

@@ -63,6 +63,12 @@ namespace engine {
 // every picture of a run has one height, whichever layers are on.
 inline constexpr std::size_t kOwnLegendEntries = 4;
 inline constexpr std::size_t kLegendEntries = 31;
+// The widest an entry's text can be, px (page.h's Document::legend_text_width): the
+// events' counts ("in 0.5 s: begins 10, ends 10, hits 10; touching 10" is 440 px) are
+// wider than the 366 px of the stages before; the band's columns are made this wide, two
+// on a page 980 px wide or more, so that no entry runs into the next column or off the
+// page. The drawing test measures every entry against it.
+inline constexpr int kLegendTextWidth = 460;
 
 // While window.overlay is on, draws the overlay onto the canvas and sets the legend;
 // while it is off, takes the legend away. Called last in a frame, over everything.

@@ -63,8 +63,8 @@ void drawEvents(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
     legend.push_back({kEventEndColor, "end: it stops (x)"});
     legend.push_back({kEventHitColor, "hit: a begin faster than " + draw::fixed(kHitSpeed, 0) + " px/s"});
     legend.push_back({kEventBeginColor, "in 0.5 s: begins " + std::to_string(begins) + ", ends " +
-                                            std::to_string(ends) + ", hits " + std::to_string(hits) +
-                                            "; touching now " + std::to_string(events.touchingCount())});
+                                            std::to_string(ends) + ", hits " + std::to_string(hits) + "; touching " +
+                                            std::to_string(events.touchingCount())});
 }
 
 }  // namespace engine

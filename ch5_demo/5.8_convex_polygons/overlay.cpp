@@ -188,6 +188,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
     window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
+    window.document.legend_text_width = kLegendTextWidth;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     // 5.8's own layer is GJK's diagram (gjk_overlay.h). Every layer adds the bounding

@@ -75,6 +75,7 @@ void ContactSolver::step(ShapeList shapes, BroadPhase& broad_phase, Islands& isl
     }
     // 5.9: the limits that began to hold, for whoever reads events (nothing else changes).
     if (events.kept() && !joints.empty()) joints.reportLimits(shapes, events);
+    if (!joints.empty()) joints.capSpeeds(bodies_);
     // The shapes' own step adds this step's gravity again (see prepare).
     // A kinematic shape's (5.9) is its own: no impulse changed it.
     for (std::size_t i = 0; i < shapes.size(); ++i) {

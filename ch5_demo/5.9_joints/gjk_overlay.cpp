@@ -235,6 +235,55 @@ std::vector<Vec2> gjkPanelCorners(std::size_t panels, double canvas_width) {
     return corners;
 }
 
+std::vector<CanvasBox> shapeBoxes(const Core& core) {
+    std::vector<CanvasBox> boxes;
+    for (std::size_t i = 0; i < core.objectCount(); ++i) {
+        const ConvexProxy proxy = gjkProxyOf(core.object(i));
+        CanvasBox box{proxy.points[0], proxy.points[0]};
+        for (std::size_t p = 1; p < proxy.count; ++p) {
+            box.low = {std::min(box.low.x, proxy.points[p].x), std::min(box.low.y, proxy.points[p].y)};
+            box.high = {std::max(box.high.x, proxy.points[p].x), std::max(box.high.y, proxy.points[p].y)};
+        }
+        boxes.push_back({box.low - Vec2{proxy.radius, proxy.radius}, box.high + Vec2{proxy.radius, proxy.radius}});
+    }
+    return boxes;
+}
+
+std::vector<Vec2> gjkPanelCorners(std::size_t panels, double canvas_width, double canvas_height,
+                                  const std::vector<CanvasBox>& occupied) {
+    const std::vector<Vec2> top_right = gjkPanelCorners(panels, canvas_width);
+    if (top_right.empty()) return top_right;
+    // The block's box in the top right, and how far it moves to each other corner.
+    CanvasBox block{top_right.front(), top_right.front()};
+    for (const Vec2 corner : top_right) {
+        block.low = {std::min(block.low.x, corner.x), std::min(block.low.y, corner.y)};
+        block.high = {std::max(block.high.x, corner.x + kGjkPanelWidth),
+                      std::max(block.high.y, corner.y + kGjkPanelHeight)};
+    }
+    const double to_left = kGjkPanelMargin - block.low.x;
+    const double to_bottom = canvas_height - kGjkPanelMargin - block.high.y;
+    const Vec2 moves[] = {{0, 0}, {to_left, 0}, {0, to_bottom}, {to_left, to_bottom}};
+    // How much of the shapes' boxes the block covers there, px^2: a floor under a whole
+    // corner counts for more than the tip of a plank.
+    const auto covered = [&](Vec2 move) {
+        const Vec2 low = block.low + move, high = block.high + move;
+        double area = 0.0;
+        for (const CanvasBox& box : occupied) {
+            const double across = std::min(high.x, box.high.x) - std::max(low.x, box.low.x);
+            const double down = std::min(high.y, box.high.y) - std::max(low.y, box.low.y);
+            if (across > 0.0 && down > 0.0) area += across * down;
+        }
+        return area;
+    };
+    Vec2 best = moves[0];
+    for (const Vec2 move : moves) {
+        if (covered(move) < covered(best)) best = move;
+    }
+    std::vector<Vec2> corners;
+    for (const Vec2 corner : top_right) corners.push_back(corner + best);
+    return corners;
+}
+
 void drawGjk(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& core,
              std::vector<browser::LegendEntry>& legend) {
     const std::optional<GjkDiagram> diagram = gjkDiagram(core);
@@ -247,7 +296,8 @@ void drawGjk(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& cor
         return;
     }
     const PanelMap map = mapFor(*diagram);
-    const std::vector<Vec2> corners = gjkPanelCorners(diagram->steps.size() + 1, canvas.width());
+    const std::vector<Vec2> corners =
+        gjkPanelCorners(diagram->steps.size() + 1, canvas.width(), canvas.height(), shapeBoxes(core));
     for (std::size_t i = 0; i < diagram->steps.size(); ++i)
         drawStep(canvas, labels, map.at(corners[i]), *diagram, i + 1);
     drawAnswer(canvas, labels, map.at(corners.back()), *diagram);
@@ -273,7 +323,7 @@ void drawGjk(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& cor
     } else if (diagram->epa) {
         legend.push_back({kGapColor, "EPA's polygon and normal: depth " + depth});
     } else {
-        legend.push_back({kGapColor, "rounded outlines overlap: depth " + depth + " (radii - gap)"});
+        legend.push_back({kGapColor, "rounded overlap: depth " + depth + " (radii - gap)"});
     }
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // 5.8's part of the overlay (overlay.h): GJK (gjk.h) drawn by its own numbers, for one
 // pair: the selected shape and the shape nearest to it. The diagram is a row of small
-// panels along the canvas's top edge, right-aligned, every one the same picture of the
-// pair's Minkowski difference A - B at the same scale, so that the walk can be followed
-// from panel to panel:
+// panels in a corner of the canvas, the one the scene leaves emptiest (the top right
+// first), every one the same picture of the pair's Minkowski difference A - B at the
+// same scale, so that the walk can be followed from panel to panel:
 //  - A - B, which GJK never builds: the hull of every a - b of their corners. A circle is
 //    its centre and a radius, so A - B is then rounded by the radii: a ring of their sum
 //    round each corner of the hull. The origin is the black cross: the shapes share a
@@ -58,6 +58,23 @@ std::optional<GjkDiagram> gjkDiagram(const Core& core);
 // corners, one a pass and the answer's last, in a row right-aligned along the top edge
 // and wrapped to another row below when they do not fit.
 std::vector<Vec2> gjkPanelCorners(std::size_t panels, double canvas_width);
+
+// A box on the canvas, px: what the scene draws somewhere (a shape and its joints' anchors).
+struct CanvasBox {
+    Vec2 low, high;
+};
+
+// Every shape's box: its corners (a circle's centre) and radius, as GJK sees it.
+std::vector<CanvasBox> shapeBoxes(const Core& core);
+
+// The same block of panels in whichever corner of a canvas `canvas_width` x
+// `canvas_height` px it covers the least of `occupied` in (the area of the boxes under
+// it): the top right, the top left, the bottom right or the bottom left, the first of
+// them on a tie. Panels over the
+// scene would hide what its layers draw there (a pendulum's pin, its limit event); a
+// corner keeps them together where the eye finds them, and where the scene is emptiest.
+std::vector<Vec2> gjkPanelCorners(std::size_t panels, double canvas_width, double canvas_height,
+                                  const std::vector<CanvasBox>& occupied);
 // Each panel this large: wide enough for a label of 14 letters ("123.45 px deep"), and
 // short enough that a row of them leaves the top end of the demo's long slide uncovered.
 inline constexpr double kGjkPanelWidth = 136.0;   // px

@@ -157,6 +157,9 @@ public:
     void prepare(ShapeList shapes, const std::vector<SolverBody>& bodies, const WorldSettings& world);
     void warmStart(std::vector<SolverBody>& bodies) const;
     void solve(std::vector<SolverBody>& bodies);
+    // After the iterations: a body a joint holds leaves them no faster than
+    // kFastestHeldSpeed (joints.cpp), a safety net for joints too stiff for the solver.
+    void capSpeeds(std::vector<SolverBody>& bodies) const;
     // After the iterations, only while someone reads events: a limit event for each
     // side of a limit that holds now (its total impulse > 0: it stopped the joint from
     // passing within this step) and did not in the step before. Velocities untouched.

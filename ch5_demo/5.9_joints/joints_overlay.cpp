@@ -211,15 +211,17 @@ void drawJoints(browser::Canvas& canvas, draw::LabelLayout& labels, const Core& 
         labels.place(canvas, marks[k].anchor_b + Vec2{kErrorRing, kErrorRing}, kErrorColor,
                      draw::fixed(marks[k].separation, 2) + " px");
     }
-    legend.push_back({kLinkColor, "anchor x, link centre to anchor, rod"});
-    legend.push_back({kLimitColor, "limit: angle arc, slider's range, rope"});
-    legend.push_back({kErrorColor, "error > " + draw::fixed(kShownError, 0) + " px (ring): " + std::to_string(past) +
-                                       ", largest " + draw::fixed(largest, 2) + " px"});
     // The count of each kind on two lines: on one it is wider than a column of the legend.
+    // First, so that the two stay in one column of the band, the own layer's 7 entries in
+    // rows of 4 and every layer's 43 in rows of 22 (overlay.h).
     const auto count = [&](JointType type) { return std::to_string(kinds[static_cast<std::size_t>(type)]); };
     legend.push_back({kLinkColor, "joints " + std::to_string(marks.size()) + ": revolute " +
                                       count(JointType::revolute) + ", distance " + count(JointType::distance) + ","});
     legend.push_back({kLinkColor, "  weld " + count(JointType::weld) + ", prismatic " + count(JointType::prismatic)});
+    legend.push_back({kLinkColor, "anchor x, link centre to anchor, rod"});
+    legend.push_back({kLimitColor, "limit: angle arc, slider's range, rope"});
+    legend.push_back({kErrorColor, "error > " + draw::fixed(kShownError, 0) + " px (ring): " + std::to_string(past) +
+                                       ", largest " + draw::fixed(largest, 2) + " px"});
     // What the page itself draws beyond the book's blue, red, gray and green, named here
     // where a reader of the joints looks for colours: the kinematic bodies and the mouse.
     legend.push_back(

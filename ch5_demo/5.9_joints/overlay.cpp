@@ -189,6 +189,7 @@ void drawOverlay(browser::Window& window, const Core& core) {
     std::vector<browser::LegendEntry>& legend = window.document.legend;
     legend.clear();
     window.document.legend_entries = window.every_layer_possible ? kLegendEntries : kOwnLegendEntries;
+    window.document.legend_text_width = kLegendTextWidth;
     if (!window.overlay) return;
     Sheet sheet{window.document.canvas, {}, legend};
     // 5.9's own layer is its joints (joints_overlay.h). Every layer adds the bounding

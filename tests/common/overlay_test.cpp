@@ -269,6 +269,40 @@ TEST_CASE("overlay: the legend's band has a row for every entry the stage's over
     CHECK(swatch_rows == 12 * 12);  // twelve swatches of 12 px, one under the other
 }
 
+// The stage says how wide its widest entry can be (Document::legend_text_width): each
+// column is that, a 12 px swatch, a 6 px gap before the text and 6 px after it. 366 px
+// (the default) makes columns 390 px apart: three on a page 1180 px wide (1170 px inside
+// its 10 px of margins); 460 px makes them 484 px apart: two.
+TEST_CASE("overlay: the legend's columns are as wide as the stage's widest entry, and every entry lies in one") {
+    CHECK(browser::legend_band_height(43, 1180) == 15 * 18 + 10);       // 15 + 14 + 14
+    CHECK(browser::legend_band_height(43, 1180, 460) == 22 * 18 + 10);  // 22 + 21
+    CHECK(browser::legend_band_height(31, 980, 460) == 16 * 18 + 10);   // 970 px: two columns
+    CHECK(browser::legend_band_height(31, 980, 490) == 31 * 18 + 10);   // 514 px apart: one
+
+    // A page 800 + 380 = 1180 px wide, an echo of one line (no band under it) and five
+    // entries in columns of 460 px: rows of three (5 entries, 2 columns), the first column
+    // at x = 10, the second 484 px on, the first row 5 px under the canvas.
+    browser::Document document{browser::Canvas(800, 300), "echo"};
+    document.legend_text_width = 460;
+    document.legend.assign(5, {kPurple, "entry"});
+    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
+    REQUIRE(boxes.size() == 5);
+    const int entry = 12 + 6 + browser::text_width("entry");
+    CHECK(boxes[0].left == 10);
+    CHECK(boxes[0].top == 300 + 5);
+    CHECK(boxes[0].right == 10 + entry);
+    CHECK(boxes[0].bottom == 300 + 5 + 18);
+    CHECK(boxes[2].top == 300 + 5 + 2 * 18);
+    CHECK(boxes[3].left == 10 + 484);
+    CHECK(boxes[3].top == 300 + 5);
+    CHECK(boxes[4].top == 300 + 5 + 18);
+    // Where the page draws them: the swatch of the fourth entry at (494, 305 + 2).
+    const browser::Image page = browser::render_page(document);
+    CHECK(page.height == 300 + 3 * 18 + 10);
+    CHECK(page.at(494, 305 + 4) == kPurple);
+    CHECK(page.at(494 - 1, 305 + 4) == browser::colors::kWhite);
+}
+
 TEST_CASE("overlay: a note on a line of the echo is a dim mark after it and its text under the panel") {
     const std::string echo = "Selected Object:\n  Mass: 6.993006993006993\n  Friction: 0.300\n";
     browser::Document document{browser::Canvas(200, 300), echo};

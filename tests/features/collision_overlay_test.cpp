@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "circle.h"
 #include "expect.h"
@@ -16,6 +17,7 @@
 #include "page.h"
 #include "rectangle.h"
 #include "stage_fixture.h"
+#include "text.h"
 
 namespace collision_overlay_test {
 
@@ -143,8 +145,42 @@ TEST_CASE(
     without.legend_room = false;
     test::expectEqual(
         "the page's height with the legend, less the page's without it",
-        browser::legend_band_height(engine::kLegendEntries, document.canvas.width() + browser::kPanelWidth),
+        browser::legend_band_height(engine::kLegendEntries, document.canvas.width() + browser::kPanelWidth,
+                                    document.legend_text_width),
         browser::render_page(document).height - browser::render_page(without).height);
+}
+
+// Every entry of the legend, every layer on, is no wider than the stage says its entries
+// can be (page.h's Document::legend_text_width, the width of the band's columns), and
+// lies on the page, left of the next column: no entry runs into another or off the page.
+TEST_CASE("collision overlay: every entry of the legend, every layer on, lies on the page in its own column") {
+    EveryLayerPage page;
+    page.core.add(engine::Circle({200.5, 100.5}, 20));
+    page.core.add(engine::Circle({230.5, 100.5}, 20));
+    page.core.add(engine::Rectangle({400.5, 300.5}, 60, 80));
+    page.window.overlay = true;
+    page.window.overlay_all = true;
+    page.window.every_layer_possible = true;
+    for (int frame = 0; frame < 3; ++frame) {
+        page.window.clock.advanceFrame();
+        page.core.runGameLoop();
+    }
+    const browser::Document& document = page.window.document;
+    REQUIRE(document.legend.size() == engine::kLegendEntries);
+    for (const browser::LegendEntry& entry : document.legend) {
+        INFO(entry.text);
+        CHECK(browser::text_width(entry.text) <= document.legend_text_width);
+    }
+    const int page_width = browser::render_page(document).width;
+    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
+    REQUIRE(boxes.size() == document.legend.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        INFO(document.legend[i].text);
+        CHECK(boxes[i].right <= page_width - 5);  // inside the legend's frame
+        for (const browser::LegendBox& other : boxes) {
+            if (other.top == boxes[i].top && other.left > boxes[i].left) CHECK(boxes[i].right <= other.left);
+        }
+    }
 }
 
 }  // namespace collision_overlay_test

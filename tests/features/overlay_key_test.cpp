@@ -11,6 +11,7 @@
 #include "overlay.h"
 #include "page.h"
 #include "png_io.h"
+#include "stage_fixture.h"
 #include "stage_program.h"
 
 namespace overlay_key_test {
@@ -36,6 +37,14 @@ bool bookWithRoom(const browser::Image& page, const browser::Image& book) {
         }
     }
     return true;
+}
+
+// How wide the stage makes its legend's columns for (page.h's Document::legend_text_width):
+// what its overlay sets on the page, on or off.
+int legendTextWidth() {
+    test::StageFixture page;
+    engine::drawOverlay(page.window, page.core);
+    return page.window.document.legend_text_width;
 }
 
 }  // namespace
@@ -73,9 +82,11 @@ TEST_CASE("overlay key: the legend's band under the page is as tall as the large
     const browser::Image own = finalPicture(folder, "own", "--overlay --keys \"f g\"");
     // The page is the canvas and the panel (page.h) at scale 1: its width is theirs.
     test::expectEqual("the band's height: the page's with every layer on, less the book's page",
-                      browser::legend_band_height(engine::kLegendEntries, book.width), all.height - book.height);
+                      browser::legend_band_height(engine::kLegendEntries, book.width, legendTextWidth()),
+                      all.height - book.height);
     test::expectEqual("the band's height: the page's with its own layer alone, less the book's page",
-                      browser::legend_band_height(engine::kOwnLegendEntries, book.width), own.height - book.height);
+                      browser::legend_band_height(engine::kOwnLegendEntries, book.width, legendTextWidth()),
+                      own.height - book.height);
 }
 
 }  // namespace overlay_key_test

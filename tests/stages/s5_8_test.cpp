@@ -429,6 +429,46 @@ TEST_CASE("s5_8: the diagram's panels sit in a row along the top, clear of the l
     CHECK(narrow[1].y > narrow[0].y);
 }
 
+// The same row in the corner of the canvas where it covers the least area of the shapes'
+// boxes: the top right first, then the top left, the bottom right, the bottom left. Two panels on an
+// 800 x 450 canvas make a block 2 x 136 + 6 = 278 px wide and 108 px tall: from x = 800 -
+// 8 - 278 = 514 on the right, from 8 on the left; from y = 8 at the top, from 450 - 8 -
+// 108 = 334 at the bottom.
+TEST_CASE("s5_8: the panels go to the corner of the canvas the shapes leave emptiest") {
+    using Box = engine::CanvasBox;
+    const auto first = [](const std::vector<Box>& occupied) {
+        return engine::gjkPanelCorners(2, 800, 450, occupied).front();
+    };
+    const Box top_right{{600, 40}, {620, 60}}, top_left{{100, 40}, {120, 60}};
+    const Box bottom_right{{700, 400}, {720, 420}}, bottom_left{{50, 400}, {70, 420}};
+    CHECK(first({}) == Vec2{514, 8});
+    CHECK(first({top_right}) == Vec2{8, 8});
+    CHECK(first({top_right, top_left}) == Vec2{514, 334});
+    CHECK(first({top_right, top_left, bottom_right}) == Vec2{8, 334});
+    CHECK(first({top_right, top_left, bottom_right, bottom_left}) == Vec2{514, 8});  // a tie: the top right
+    CHECK(first({top_right, bottom_right, bottom_left, Box{{10, 10}, {20, 20}}, top_left}) == Vec2{514, 8});
+    // Area, not count: two 20 px boxes in the top right cover less than a 40 px one in
+    // each other corner (800 against 1600 px^2).
+    const Box big_top_left{{100, 40}, {140, 80}}, big_bottom_right{{700, 380}, {740, 420}},
+        big_bottom_left{{50, 380}, {90, 420}};
+    CHECK(first({top_right, Box{{640, 40}, {660, 60}}, big_top_left, big_bottom_right, big_bottom_left}) ==
+          Vec2{514, 8});
+    // A box that ends where the block starts is not under it.
+    CHECK(first({Box{{300, 40}, {514, 60}}}) == Vec2{514, 8});
+    // The second panel keeps its place beside the first.
+    CHECK(engine::gjkPanelCorners(2, 800, 450, {top_right})[1] == Vec2{8 + 142, 8});
+    // A shape's box: a circle's centre and radius, a rectangle's corners.
+    test::WorldFixture page(test::world(false));
+    page.core.add(engine::Circle({100, 50}, 10));
+    page.core.add(engine::Rectangle({300, 200}, 40, 20));
+    const std::vector<Box> boxes = engine::shapeBoxes(page.core);
+    REQUIRE(boxes.size() == 2);
+    CHECK(boxes[0].low == Vec2{90, 40});
+    CHECK(boxes[0].high == Vec2{110, 60});
+    CHECK(boxes[1].low == Vec2{280, 190});
+    CHECK(boxes[1].high == Vec2{320, 210});
+}
+
 // The slash key (user_control.h): one new body, a convex polygon of 3 to 8 corners, at
 // the selected object's centre, drawn from the page's seeded random numbers: the corners
 // polygon.h's randomCorners draws from a generator in the same state, every one of them

@@ -4,22 +4,32 @@
 // motion is not; the band under the panel names the kinematic bodies only where there
 // are some; a limit event gets a diamond at the joint's anchor on the events' layer,
 // and the legend names it; the joints' legend names the kinematic colour and the mouse
-// joint's line in the colours the page draws them in.
+// joint's line in the colours the page draws them in. With every layer on, the legend's
+// entries each lie on the page in a column of their own, and GJK's panels keep off the
+// pendulums' pins.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "circle.h"
 #include "events_overlay.h"
+#include "gjk_overlay.h"
 #include "joints.h"
 #include "joints_overlay.h"
 #include "kinematic_drawing.h"
+#include "overlay.h"
 #include "overlay_draw.h"
+#include "page.h"
 #include "rectangle.h"
+#include "scene_io.h"
+#include "text.h"
 #include "world_fixture.h"
 
 namespace s5_9_drawing_test {
@@ -219,6 +229,125 @@ TEST_CASE("s5_9: the joints' legend names the kinematic colour and the mouse's l
     const browser::LegendEntry& kinematic = entryOf(legend, "kinematic body");
     CHECK(kinematic.text == "kinematic body; arrows: its motion in 1 s");
     CHECK(colourNear(canvas, {600, 195}, kinematic.color));  // the plank's top edge
+}
+
+namespace {
+
+// A scene of the stage's folder run `frames` frames as `build/s5_9_joints --scene FILE
+// --overlay-all` runs it: its canvas, every layer on, the legend's band kept.
+struct EveryLayerRun {
+    explicit EveryLayerRun(const std::string& file)
+        : scene(engine::loadScene(std::filesystem::path(SCENE_LIBRARY_DIR).parent_path() / "5.9_joints" / file)),
+          page(scene.world) {
+        page.window.document.canvas =
+            browser::Canvas(static_cast<int>(scene.world.width), static_cast<int>(scene.world.height));
+        engine::buildScene(page.core, scene);
+        page.window.overlay = page.window.overlay_all = page.window.every_layer_possible = true;
+        page.window.document.legend_room = true;
+    }
+    void run(int frames) {
+        for (int frame = 0; frame < frames; ++frame) {
+            page.window.clock.advanceFrame();
+            page.core.runGameLoop();
+        }
+    }
+    engine::Scene scene;
+    test::WorldFixture page;
+};
+
+// Whether every entry's box (page.h's legend_boxes) lies inside the legend's frame, 5 px
+// in from each side of a page `page_width` wide, and left of every entry to its right
+// on the same row.
+bool everyEntryOnThePage(const browser::Document& document, int page_width) {
+    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
+    for (const browser::LegendBox& box : boxes) {
+        if (box.left < 5 || box.right > page_width - 5) return false;
+        for (const browser::LegendBox& other : boxes) {
+            if (other.top == box.top && other.left > box.left && box.right > other.left) return false;
+        }
+    }
+    return true;
+}
+
+// Whether an entry that goes on from the one before (its text starts with spaces, as the
+// joints' second line of counts) lies under it, in the same column.
+bool continuedInItsColumn(const browser::Document& document) {
+    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
+    for (std::size_t i = 1; i < boxes.size(); ++i) {
+        if (!document.legend[i].text.starts_with(" ")) continue;
+        if (boxes[i].left != boxes[i - 1].left || boxes[i].top != boxes[i - 1].bottom) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+// The ragdoll's page is 800 + 380 = 1180 px wide. Its legend with every layer on has
+// entries up to 440 px of text (5.7's counts: "in 0.5 s: begins 5, ends 5, hits 5;
+// touching 0"): in columns 390 px apart, the stages' before 5.7, the third column starts
+// at 790 and such an entry ends past 1180. In columns made for 460 px of text (overlay.h's
+// kLegendTextWidth), 484 px apart, two fit, and every entry ends inside the frame; the
+// joints' counts, two lines, stay in one column, with every layer and with their own.
+TEST_CASE("s5_9: every entry of the ragdoll's legend, every layer on, lies on the page in its own column",
+          "[drawing]") {
+    EveryLayerRun ragdoll("ragdoll.json");
+    ragdoll.run(141);
+    browser::Document document = ragdoll.page.window.document;
+    REQUIRE(document.legend.size() == engine::kLegendEntries);
+    const int page_width = document.canvas.width() + browser::kPanelWidth;
+    CHECK(page_width == 1180);
+    CHECK(document.legend_text_width == engine::kLegendTextWidth);
+    for (const browser::LegendEntry& entry : document.legend) {
+        INFO(entry.text);
+        CHECK(browser::text_width(entry.text) <= engine::kLegendTextWidth);
+    }
+    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
+    REQUIRE(boxes.size() == document.legend.size());
+    CHECK(boxes[0].left == 10);
+    CHECK(boxes[(engine::kLegendEntries + 1) / 2].left == 10 + 12 + 6 + 460 + 6);  // the second column
+    CHECK(everyEntryOnThePage(document, page_width));
+    CHECK(browser::render_page(document).width == page_width);
+    CHECK(continuedInItsColumn(document));
+    // The same legend in the narrower columns of the stages before runs off the page.
+    document.legend_text_width = browser::kLegendTextWidth;
+    CHECK_FALSE(everyEntryOnThePage(document, page_width));
+    // The joints' layer alone, in a run that shows no other: 7 entries in rows of 4.
+    ragdoll.page.window.overlay_all = ragdoll.page.window.every_layer_possible = false;
+    ragdoll.run(1);
+    const browser::Document& own = ragdoll.page.window.document;
+    REQUIRE(own.legend.size() == engine::kOwnLegendEntries);
+    CHECK(everyEntryOnThePage(own, page_width));
+    CHECK(continuedInItsColumn(own));
+}
+
+// The pendulums hang from pins on the canvas's top edge, y = 50: the bracket's at x =
+// 640, where its limit events are drawn. GJK's row of panels (two: one pass and the
+// answer, for the selected pin and its bob) in the top right corner would reach from
+// x = 900 - 8 - 278 = 614 to 892 and from y = 8 to 116, over that pin; the top left
+// holds two pins (80 and 230), the bottom right nothing: the panels go there.
+TEST_CASE("s5_9: GJK's panels keep off the pendulums' pins, in the corner the scene leaves empty", "[drawing]") {
+    EveryLayerRun pendulum("pendulum.json");
+    pendulum.run(141);
+    const engine::Core& core = pendulum.page.core;
+    const std::optional<engine::GjkDiagram> diagram = engine::gjkDiagram(core);
+    REQUIRE(diagram);
+    const std::size_t panels = diagram->steps.size() + 1;
+    const std::vector<Vec2> corners = engine::gjkPanelCorners(panels, 900, 450, engine::shapeBoxes(core));
+    REQUIRE(corners.size() == panels);
+    const auto covers = [&](const std::vector<Vec2>& at, Vec2 point) {
+        return std::any_of(at.begin(), at.end(), [&](Vec2 corner) {
+            return corner.x <= point.x && point.x <= corner.x + engine::kGjkPanelWidth && corner.y <= point.y &&
+                   point.y <= corner.y + engine::kGjkPanelHeight;
+        });
+    };
+    for (const Vec2 pin : {Vec2{80, 50}, Vec2{230, 50}, Vec2{420, 50}, Vec2{640, 50}}) {
+        INFO("pin at " << pin.x << ", " << pin.y);
+        CHECK_FALSE(covers(corners, pin));
+    }
+    CHECK(corners.back().y == 450 - 8 - 108);  // the bottom row
+    CHECK(corners.back().x == 900 - 8 - 136);  // right-aligned
+    // Along the top edge, as before, they cover the bracket's pin.
+    CHECK(covers(engine::gjkPanelCorners(panels, 900), Vec2{640, 50}));
 }
 
 }  // namespace s5_9_drawing_test

@@ -1,6 +1,7 @@
 // The world 5.9's joint tests run in, and what they measure of it, shared by the stage
 // tests (s5_9_test.cpp) and the sweeps (s5_9/joint_sweeps_test.cpp): a body found by
-// its id, a joint's separation, the largest of them, and the world's energy.
+// its id, a joint's separation, the largest of them, and the world's energy; and a grid
+// of pinned bodies (the stage test's and s5_9/positional_passes_test.cpp's).
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -10,7 +11,9 @@
 #include <cstddef>
 #include <vector>
 
+#include "circle.h"
 #include "joints.h"
+#include "rectangle.h"
 #include "world_fixture.h"
 
 namespace s5_9_measures {
@@ -83,6 +86,42 @@ inline double meanBetween(const std::vector<double>& samples, double from, doubl
         sum += samples[k];
     }
     return sum / count;
+}
+
+// A grid of `side` x `side` bodies `spacing` px apart, its top left one at `corner`
+// and static, each pinned halfway to its right and lower neighbours (2 side (side - 1)
+// pins): discs of radius `size`, or boxes of half side `size`. Added to `core` row by
+// row, after whatever is there.
+inline void hangGrid(engine::Core& core, engine::Vec2 corner, int side, double spacing, double size, bool boxes) {
+    const std::size_t first = core.objectCount();
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            const engine::Vec2 at = corner + engine::Vec2{column * spacing, row * spacing};
+            const engine::PhysicalAttributes attributes =
+                row == 0 && column == 0 ? engine::PhysicalAttributes{.mass = 0.0} : engine::PhysicalAttributes{};
+            if (boxes) {
+                core.add(engine::Rectangle(at, 2 * size, 2 * size, attributes));
+            } else {
+                core.add(engine::Circle(at, size, attributes));
+            }
+        }
+    }
+    const auto body = [&](int row, int column) -> const engine::RigidShape& {
+        return core.object(first + static_cast<std::size_t>(row * side + column));
+    };
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            const engine::Vec2 here = body(row, column).center();
+            if (column + 1 < side) {
+                core.join(engine::pinAt(engine::JointType::revolute, body(row, column), body(row, column + 1),
+                                        here + engine::Vec2{spacing / 2, 0}));
+            }
+            if (row + 1 < side) {
+                core.join(engine::pinAt(engine::JointType::revolute, body(row, column), body(row + 1, column),
+                                        here + engine::Vec2{0, spacing / 2}));
+            }
+        }
+    }
 }
 
 }  // namespace s5_9_measures
