@@ -622,15 +622,12 @@ void correctPin(Joints::Placed& a, Joints::Placed& b, const JointDefinition& joi
     if (determinant <= 0.0) return;
     const Vec2 gap = frame.gap;
     const Vec2 impulse{-(k22 * gap.x - k12 * gap.y) / determinant, -(k11 * gap.y - k12 * gap.x) / determinant};
-    if (!rotation) {
-        a.move(impulse * -a.inv_mass);
-        b.move(impulse * b.inv_mass);
-        return;
-    }
+    // Without rotation the arms and inverse inertias are 0: no turn, the whole step.
     const double turn_a = -ra.cross(impulse) * ia, turn_b = rb.cross(impulse) * ib;
     const double share = trustedShare(turn_a, turn_b);
     a.move(impulse * (-share * a.inv_mass));
     b.move(impulse * (share * b.inv_mass));
+    if (!rotation) return;
     a.rotate(turn_a * share);
     b.rotate(turn_b * share);
 }

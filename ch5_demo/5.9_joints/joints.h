@@ -167,11 +167,13 @@ public:
     // After the shapes have moved: world.position_iterations passes that move and turn
     // the bodies themselves until each rigid joint's anchors meet again (Box2D 2.4's
     // last step for its joints), with positional correction on and the joints hard
-    // (the world's joint_hertz 0: soft joints are left to their springs, joints.cpp). A soft constraint pulls
-    // an error back over a few steps; but a link that turns by most of a radian in one
-    // step (the end of a whipping chain) leaves its pin by more than any step's pull
-    // can keep up with, because the velocities are a straight-line guess at an arc. The
-    // passes work on the positions as they are, with no velocity, so they add no energy.
+    // (the world's joint_hertz 0: soft joints are left to their springs, joints.cpp). A
+    // soft constraint pulls an error back over a few steps; but a link that turns by most
+    // of a radian in one step (the end of a whipping chain) leaves its pin by more than
+    // any step's pull can keep up with, because the velocities are a straight-line guess
+    // at an arc. Each pass trusts its straight step to half a radian of turn (joints.cpp,
+    // kLongestTrustedTurn). The passes work on the positions as they are, with no
+    // velocity, so they add no energy.
     // Springs and ropes within their range are left as they are.
     void correctPositions(ShapeList shapes, const WorldSettings& world);
 
