@@ -24,6 +24,7 @@
 #include "joints.h"
 #include "joints_overlay.h"
 #include "kinematic_drawing.h"
+#include "legend_layout.h"
 #include "overlay.h"
 #include "overlay_draw.h"
 #include "page.h"
@@ -255,20 +256,6 @@ struct EveryLayerRun {
     test::WorldFixture page;
 };
 
-// Whether every entry's box (page.h's legend_boxes) lies inside the legend's frame, 5 px
-// in from each side of a page `page_width` wide, and left of every entry to its right
-// on the same row.
-bool everyEntryOnThePage(const browser::Document& document, int page_width) {
-    const std::vector<browser::LegendBox> boxes = browser::legend_boxes(document);
-    for (const browser::LegendBox& box : boxes) {
-        if (box.left < 5 || box.right > page_width - 5) return false;
-        for (const browser::LegendBox& other : boxes) {
-            if (other.top == box.top && other.left > box.left && box.right > other.left) return false;
-        }
-    }
-    return true;
-}
-
 // Whether an entry that goes on from the one before (its text starts with spaces, as the
 // joints' second line of counts) lies under it, in the same column.
 bool continuedInItsColumn(const browser::Document& document) {
@@ -305,18 +292,18 @@ TEST_CASE("s5_9: every entry of the ragdoll's legend, every layer on, lies on th
     REQUIRE(boxes.size() == document.legend.size());
     CHECK(boxes[0].left == 10);
     CHECK(boxes[(engine::kLegendEntries + 1) / 2].left == 10 + 12 + 6 + 460 + 6);  // the second column
-    CHECK(everyEntryOnThePage(document, page_width));
+    CHECK(test::entryOffThePage(document, page_width).value_or("none") == "none");
     CHECK(browser::render_page(document).width == page_width);
     CHECK(continuedInItsColumn(document));
     // The same legend in the narrower columns of the stages before runs off the page.
     document.legend_text_width = browser::kLegendTextWidth;
-    CHECK_FALSE(everyEntryOnThePage(document, page_width));
+    CHECK(test::entryOffThePage(document, page_width).has_value());
     // The joints' layer alone, in a run that shows no other: 7 entries in rows of 4.
     ragdoll.page.window.overlay_all = ragdoll.page.window.every_layer_possible = false;
     ragdoll.run(1);
     const browser::Document& own = ragdoll.page.window.document;
     REQUIRE(own.legend.size() == engine::kOwnLegendEntries);
-    CHECK(everyEntryOnThePage(own, page_width));
+    CHECK(test::entryOffThePage(own, page_width).value_or("none") == "none");
     CHECK(continuedInItsColumn(own));
 }
 
